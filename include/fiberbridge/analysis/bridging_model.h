@@ -1,0 +1,45 @@
+#pragma once
+// The fiber-bridging model of seed section 3.4 (Eqs. 9-15). SI units.
+namespace fiberbridge::analysis {
+
+struct BridgingFiber {
+  double E_f = 40e9;       ///< fiber modulus [Pa] (tracheid: 40 GPa)
+  double r_f = 20e-6;      ///< fiber radius [m] (tracheid: 20 um)
+  double sigma_fb = 648e6; ///< fiber strength [Pa] (tracheid: 648 MPa); eps_fb = sigma_fb / E_f
+  double G_c = 200;        ///< peeling toughness [J/m^2]
+  double area() const;     ///< A_f = pi r_f^2 (cylinder)
+  double peel_width() const; ///< W_f = pi r_f
+};
+
+/// Eq. 9, exact: fiber strain for root opening delta, opening slope k, r = 1 - x/l_b, with the
+/// linear opening profile delta(x) = k (l_b - x).
+double fiber_strain_exact(double delta, double k, double r, double l_b);
+
+/// Eq. 11's integral factor F(r_b) = (2 r_b - 1)/(1 - r_b)^2 - ln(1 - r_b)/r_b (F(0) = 0 limit).
+double eq11_factor(double r_b);
+
+/// Eq. 12: r_b where the fiber reaches its breaking strain, r_b = 1 + phi^2 - phi sqrt(2 + phi^2),
+/// phi = k / (2 sqrt(eps_fb)).
+double r_b_breaking(double k, const BridgingFiber& f);
+
+/// Eq. 14: r_b where peeling reaches G_c, r/(1-r)^4 = 4 W_f G_c / (A_f E_f k^4), solved
+/// numerically (unique root in (0,1): the left side increases monotonically).
+double r_b_peeling(double k, const BridgingFiber& f);
+
+enum class BridgingMechanism { breaking, peeling, governing };
+
+/// Eq. 11 with r_b from Eq. 12 or 14 (`governing`: the mechanism with the larger x_b, i.e. the
+/// smaller r_b, seed section 3.4): sigma(delta) for density rho_b [1/m^2], zone length l_b [m].
+double bridging_stress_exact(double delta, double l_b, double rho_b, const BridgingFiber& f,
+                             BridgingMechanism m);
+
+/// Small-k limits: Eq. 13 (breaking) and Eq. 15 (peeling), linear in delta.
+double bridging_stress_eq13(double delta, double l_b, double rho_b, const BridgingFiber& f);
+double bridging_stress_eq15(double delta, double l_b, double rho_b, const BridgingFiber& f);
+
+/// Bridged-fiber density [1/m^2] that makes the model give `sigma` at `delta` (seed: sigma at
+/// delta = 0.1 mm, i.e. sigma_1), for the small-k forms (Eq. 13 or 15) or the exact form.
+double bridged_density(double sigma, double delta, double l_b, const BridgingFiber& f,
+                       BridgingMechanism m, bool small_k);
+
+} // namespace fiberbridge::analysis

@@ -1,0 +1,61 @@
+#pragma once
+// What a scene item (extract, fit, rank, bridging, fem, mpm, beam, compare, study) sees of the
+// scene: the parsed parameters, the output directory, the summary it adds its block to, and what
+// earlier items handed on (the fitted law, simulation results for compare).
+#include "fiberbridge/core/summary.h"
+#include "fiberbridge/law/law_spec.h"
+#include "fiberbridge/law/rcurve.h"
+#include "fiberbridge/law/specimen.h"
+#include "fiberbridge/law/traction_law.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <map>
+#include <string>
+
+namespace fiberbridge::app {
+
+struct SceneContext {
+  dealii::ParameterHandler* prm = nullptr; ///< every section declared, the scene parsed
+  std::string output_dir;
+  Json summary = Json::object();
+
+  /// The law for simulations: from `fit` when the scene runs it (extracted law applied without
+  /// retyping), else from the `Cohesive law` section. Built on first use (law()).
+  law::TractionLawPtr fitted_law;
+  double fitted_j_tip = 0;
+
+  /// Results of the simulations that ran, by model name ("fem", "mpm", "beam"), for compare.
+  std::map<std::string, law::SimulationResult> results;
+
+  /// The law and J_tip a simulation uses (fit's output, else the Cohesive law section).
+  law::TractionLawPtr law();
+  double j_tip();
+  law::Specimen specimen() const; ///< the Specimen section (defaults: the seed's DCB)
+  law::Material material() const; ///< the Material section (defaults: Douglas-fir)
+  /// Path inside the output directory.
+  std::string out(const std::string& file) const { return output_dir + "/" + file; }
+
+private:
+  law::TractionLawPtr section_law_;
+  double section_j_tip_ = 0;
+};
+
+/// One scene item: declares its prm section(s) and runs. Simulation items return their result
+/// through ctx.results[name]; all items add their block to ctx.summary.
+struct SceneItem {
+  std::string name;
+  void (*declare)(dealii::ParameterHandler&); ///< may be nullptr (no own section)
+  void (*run)(SceneContext&);
+};
+
+/// The registry, in the order items run when a scene lists them.
+const std::vector<SceneItem>& scene_items();
+
+/// Common writer for a simulation item: rcurve_<model>.csv, the summary block (DESIGN.md section
+/// 5: G_ss_J_m2, wall_time_s, n_dofs or n_particles, rdelta_rel_error_vs_eq2, notes) and an R(a)
+/// PNG. Every simulation item calls this once with its result.
+void report_simulation(SceneContext& ctx, law::SimulationResult result,
+                       const std::string& size_key /* "n_dofs" or "n_particles" or "n_elements" */);
+
+} // namespace fiberbridge::app

@@ -1,0 +1,42 @@
+#include "fiberbridge/law/rcurve.h"
+
+#include "fiberbridge/core/csv.h"
+#include "fiberbridge/core/units.h"
+#include "fiberbridge/law/traction_law.h"
+
+#include <cmath>
+
+namespace fiberbridge::law {
+
+void write_rcurve_csv(const std::string& path, const SimulationResult& r) {
+  CsvWriter w(path,
+              {"a_mm", "delta_root_mm", "R_energy_J_m2", "R_J_J_m2", "R_eq2_J_m2", "J_ff_J_m2",
+               "load_N", "load_point_opening_mm", "root_mm", "zone_length_mm", "J_tip_J_m2",
+               "external_work_J", "strain_energy_J", "zone_recoverable_J", "dissipated_J",
+               "kinetic_energy_J", "time_s"},
+              {"fiberbridge " + r.model + " R curve: one row per accepted tip advance; empty = "
+                                          "not available from this model (see summary.json)"});
+  const double mm = units::mm;
+  for (const auto& p : r.rcurve)
+    w.row({p.a / mm, p.delta_root / mm, p.R_energy, p.R_J, p.R_eq2, p.J_ff, p.load,
+           p.load_point_opening / mm, p.root / mm, p.zone_length / mm, p.J_tip, p.external_work,
+           p.strain_energy, p.zone_recoverable, p.dissipated, p.kinetic_energy, p.time});
+  w.close();
+}
+
+double rdelta_error_vs_eq2(const SimulationResult& r, const TractionLaw& law, double j_tip) {
+  double num = 0, den = 0;
+  for (const auto& p : r.rcurve) {
+    if (!std::isfinite(p.delta_root) || p.delta_root > law.critical_opening())
+      continue;
+    const double measured = std::isfinite(p.R_J) ? p.R_J : p.R_eq2;
+    if (!std::isfinite(measured))
+      continue;
+    const double exact = r_curve_eq2(law, j_tip, p.delta_root);
+    num += (measured - exact) * (measured - exact);
+    den += exact * exact;
+  }
+  return den > 0 ? std::sqrt(num / den) : not_available;
+}
+
+} // namespace fiberbridge::law

@@ -1,0 +1,44 @@
+#include "fiberbridge/law/specimen.h"
+
+#include "fiberbridge/core/error.h"
+
+#include <cmath>
+
+namespace fiberbridge::law {
+
+void Specimen::validate(const std::string& c) const {
+  if (!(length > 0 && width > 0 && height > 0 && initial_crack > 0))
+    throw InputError(c + ": Length, Width, Height and Initial crack must be positive (mm)");
+  if (!(initial_crack < length))
+    throw InputError(c + "/Initial crack: must be shorter than Length");
+}
+
+void Material::validate(const std::string& c) const {
+  if (!(E_L > 0 && E_T > 0 && G_LT > 0))
+    throw InputError(c + ": E_L, E_T and G_LT must be positive (MPa)");
+  // Positive-definite orthotropic compliance in the plane: 1 - nu_LT nu_TL > 0.
+  if (!(nu_LT >= 0) || !(1 - nu_LT * nu_TL() > 0))
+    throw InputError(c + "/nu_LT: must be >= 0 with nu_LT^2 E_T/E_L < 1");
+  if (!(density > 0))
+    throw InputError(c + "/Density: must be positive (kg/m^3)");
+}
+
+double cbt_chi(const Material& m) {
+  const double gamma = 1.18 * std::sqrt(m.E_L * m.E_T) / m.G_LT;
+  const double g = gamma / (1 + gamma);
+  return std::sqrt(m.E_L / (11 * m.G_LT) * (3 - 2 * g * g));
+}
+
+double cbt_load_at_crack_length(const Specimen& s, const Material& m, double j_tip, double a) {
+  const double h = s.arm_thickness();
+  const double B = s.width;
+  return std::sqrt(j_tip * B * B * h * h * h * m.E_L / 12) / (a + cbt_chi(m) * h);
+}
+
+double cbt_opening(const Specimen& s, const Material& m, double load, double a) {
+  const double h = s.arm_thickness();
+  const double ae = a + cbt_chi(m) * h;
+  return load * 8 * ae * ae * ae / (m.E_L * s.width * h * h * h);
+}
+
+} // namespace fiberbridge::law
