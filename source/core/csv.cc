@@ -64,8 +64,8 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& source_name
                            std::to_string(i + 1) + " has no name");
         for (std::size_t j = 0; j < i; ++j)
           if (cells[j] == cells[i])
-            throw InputError(source_name + ":" + std::to_string(line_no) +
-                             ": duplicate column '" + cells[i] + "' in header");
+            throw InputError(source_name + ":" + std::to_string(line_no) + ": duplicate column '" +
+                             cells[i] + "' in header");
       }
       t.columns_.resize(cells.size());
       continue;
@@ -166,6 +166,21 @@ void CsvWriter::row(const std::vector<double>& values) {
   }
   s << '\n';
   buffer_ += s.str();
+}
+
+void CsvWriter::row(const std::vector<std::string>& labels, const std::vector<double>& values) {
+  if (labels.size() + values.size() != n_columns_)
+    throw std::logic_error("CsvWriter::row: " + path_ + " expects " + std::to_string(n_columns_) +
+                           " cells, got " + std::to_string(labels.size() + values.size()));
+  for (const auto& l : labels) {
+    if (l.find(',') != std::string::npos)
+      throw std::logic_error("CsvWriter::row: label with a comma: " + l);
+    buffer_ += l + ",";
+  }
+  const std::size_t keep = n_columns_;
+  n_columns_ = values.size();
+  row(values);
+  n_columns_ = keep;
 }
 
 void CsvWriter::close() {

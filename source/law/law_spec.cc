@@ -41,8 +41,8 @@ TractionLawPtr make_law(const LawSpec& spec) {
     throw InputError(c + "/J tip: must be a positive toughness in J/m^2");
   const auto need_dc = [&] {
     if (!(spec.delta_c > 0))
-      throw InputError(c + "/Delta c: must be a positive opening in mm for law type '" +
-                       spec.type + "'");
+      throw InputError(c + "/Delta c: must be a positive opening in mm for law type '" + spec.type +
+                       "'");
   };
   const auto need_points = [&](std::size_t n) {
     if (spec.points.size() != n)

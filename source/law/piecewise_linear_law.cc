@@ -33,8 +33,7 @@ PiecewiseLinearLaw::PiecewiseLinearLaw(std::vector<LawPoint> points, std::string
       throw InputError(context + ": point " + std::to_string(i + 1) + " " + fmt_point(p) +
                        " has negative traction; bridging tractions must be >= 0");
     if (i == 0 && p.delta != 0)
-      throw InputError(context + ": the first point must be at zero opening, got " +
-                       fmt_point(p));
+      throw InputError(context + ": the first point must be at zero opening, got " + fmt_point(p));
     if (i > 0 && !(p.delta > points_[i - 1].delta))
       throw InputError(context + ": openings must increase strictly; point " +
                        std::to_string(i + 1) + " " + fmt_point(p) + " follows " +
@@ -48,7 +47,8 @@ PiecewiseLinearLaw::PiecewiseLinearLaw(std::vector<LawPoint> points, std::string
     throw InputError(context + ": all tractions are zero; use law type 'none' for no bridging");
   cumulative_area_.assign(points_.size(), 0.0);
   for (std::size_t i = 1; i < points_.size(); ++i)
-    cumulative_area_[i] = cumulative_area_[i - 1] + 0.5 * (points_[i].sigma + points_[i - 1].sigma) *
+    cumulative_area_[i] = cumulative_area_[i - 1] + 0.5 *
+                                                        (points_[i].sigma + points_[i - 1].sigma) *
                                                         (points_[i].delta - points_[i - 1].delta);
 }
 
@@ -82,7 +82,8 @@ double PiecewiseLinearLaw::envelope_integral(double delta) const {
   if (delta >= critical_opening())
     return cumulative_area_.back();
   const std::size_t i = segment(delta);
-  return cumulative_area_[i] + 0.5 * (points_[i].sigma + envelope(delta)) * (delta - points_[i].delta);
+  return cumulative_area_[i] +
+         0.5 * (points_[i].sigma + envelope(delta)) * (delta - points_[i].delta);
 }
 
 std::vector<double> PiecewiseLinearLaw::kinks() const {

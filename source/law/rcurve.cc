@@ -14,8 +14,9 @@ void write_rcurve_csv(const std::string& path, const SimulationResult& r) {
                "load_N", "load_point_opening_mm", "root_mm", "zone_length_mm", "J_tip_J_m2",
                "external_work_J", "strain_energy_J", "zone_recoverable_J", "dissipated_J",
                "kinetic_energy_J", "time_s"},
-              {"fiberbridge " + r.model + " R curve: one row per accepted tip advance; empty = "
-                                          "not available from this model (see summary.json)"});
+              {"fiberbridge " + r.model +
+               " R curve: one row per accepted tip advance; empty = "
+               "not available from this model (see summary.json)"});
   const double mm = units::mm;
   for (const auto& p : r.rcurve)
     w.row({p.a / mm, p.delta_root / mm, p.R_energy, p.R_J, p.R_eq2, p.J_ff, p.load,

@@ -16,7 +16,9 @@ using units::kPa;
 using units::mm;
 
 namespace {
-TrilinearParameters pva_control() { return {0.1 * mm, 661 * kPa, 1.0 * mm, 187 * kPa, 6.0 * mm}; }
+TrilinearParameters pva_control() {
+  return {0.1 * mm, 661 * kPa, 1.0 * mm, 187 * kPa, 6.0 * mm};
+}
 } // namespace
 
 TEST(Law, LinearSofteningForwardRIsExactlyLinear) {

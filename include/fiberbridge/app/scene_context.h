@@ -11,9 +11,12 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <map>
+#include <memory>
 #include <string>
 
 namespace fiberbridge::app {
+
+struct ExtractionOutcome; // analysis_steps.h
 
 struct SceneContext {
   dealii::ParameterHandler* prm = nullptr; ///< every section declared, the scene parsed
@@ -24,6 +27,10 @@ struct SceneContext {
   /// retyping), else from the `Cohesive law` section. Built on first use (law()).
   law::TractionLawPtr fitted_law;
   double fitted_j_tip = 0;
+
+  /// What `extract` found (data curve, steady state, laws), for `fit` and `bridging`.
+  std::shared_ptr<const ExtractionOutcome> extraction;
+  std::string scene_file; ///< for resolving relative data paths
 
   /// Results of the simulations that ran, by model name ("fem", "mpm", "beam"), for compare.
   std::map<std::string, law::SimulationResult> results;

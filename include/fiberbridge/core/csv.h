@@ -46,6 +46,8 @@ public:
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
   void row(const std::vector<double>& values);
+  /// A row that starts with text labels (material, property, ...) followed by numbers.
+  void row(const std::vector<std::string>& labels, const std::vector<double>& values);
   void close();
 
 private:

@@ -10,7 +10,9 @@ namespace fiberbridge {
 using Json = nlohmann::ordered_json;
 
 /// NaN/inf are not JSON: they become null ("not available").
-inline Json json_number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+inline Json json_number(double v) {
+  return std::isfinite(v) ? Json(v) : Json(nullptr);
+}
 
 void write_json_atomically(const std::string& path, const Json& j);
 

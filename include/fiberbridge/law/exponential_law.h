@@ -4,8 +4,9 @@
 namespace fiberbridge::law {
 
 /// Exponential softening truncated at delta_c and shifted so it reaches zero there:
-/// sigma = sigma_c (exp(-a x) - exp(-a)) / (1 - exp(-a)), x = delta/delta_c, a = `decay` (default 5).
-/// (The seed tried exponential softening first; it is rigid at zero opening like linear softening.)
+/// sigma = sigma_c (exp(-a x) - exp(-a)) / (1 - exp(-a)), x = delta/delta_c, a = `decay` (default
+/// 5). (The seed tried exponential softening first; it is rigid at zero opening like linear
+/// softening.)
 class ExponentialLaw : public TractionLaw {
 public:
   ExponentialLaw(double sigma_c, double delta_c, double decay = 5.0);

@@ -17,8 +17,8 @@ struct LawSpec {
   /// Interior points (delta, sigma) for bilinear (1 point) and trilinear (2 points); for table the
   /// whole polyline. The end points (0,0) and (delta_c, 0) are added where the type implies them.
   std::vector<LawPoint> points;
-  std::string table_file; ///< CSV for type = table when `points` is empty
-  double j_tip = 200;     ///< crack-tip (initiation) toughness [J/m^2]
+  std::string table_file;               ///< CSV for type = table when `points` is empty
+  double j_tip = 200;                   ///< crack-tip (initiation) toughness [J/m^2]
   std::string context = "Cohesive law"; ///< where it came from, for messages
 };
 

@@ -13,16 +13,16 @@ inline constexpr double not_available = std::numeric_limits<double>::quiet_NaN()
 /// One row per accepted tip advance. SI units; NaN = this model cannot give the value (say why in
 /// SimulationResult::notes).
 struct RCurvePoint {
-  double a = not_available;             ///< tip position from the load line [m]
-  double root = not_available;          ///< notch-root position (trailing edge of the zone) [m]
-  double delta_root = not_available;    ///< opening at the notch root [m]
-  double zone_length = not_available;   ///< tip - root [m]
-  double R_energy = not_available;      ///< (dW_ext - dU_rec)/(B da) [J/m^2]
-  double R_J = not_available;           ///< J_ff - delta_root sigma(delta_root)/2, J_ff measured
-  double R_eq2 = not_available;         ///< Eq. 2 from the law at delta_root
-  double J_ff = not_available;          ///< far-field J around the whole zone, measured [J/m^2]
-  double J_tip = not_available;         ///< tip J at the advance, measured [J/m^2]
-  double load = not_available;          ///< load for the whole specimen width [N]
+  double a = not_available;           ///< tip position from the load line [m]
+  double root = not_available;        ///< notch-root position (trailing edge of the zone) [m]
+  double delta_root = not_available;  ///< opening at the notch root [m]
+  double zone_length = not_available; ///< tip - root [m]
+  double R_energy = not_available;    ///< (dW_ext - dU_rec)/(B da) [J/m^2]
+  double R_J = not_available;         ///< J_ff - delta_root sigma(delta_root)/2, J_ff measured
+  double R_eq2 = not_available;       ///< Eq. 2 from the law at delta_root
+  double J_ff = not_available;        ///< far-field J around the whole zone, measured [J/m^2]
+  double J_tip = not_available;       ///< tip J at the advance, measured [J/m^2]
+  double load = not_available;        ///< load for the whole specimen width [N]
   double load_point_opening = not_available; ///< total opening at the load line [m]
   double external_work = not_available;      ///< [J]
   double strain_energy = not_available;      ///< bulk [J]
@@ -33,14 +33,14 @@ struct RCurvePoint {
 };
 
 struct SimulationResult {
-  std::string model;                 ///< "fem", "mpm", "beam"
+  std::string model; ///< "fem", "mpm", "beam"
   std::vector<RCurvePoint> rcurve;
-  double G_ss = not_available;       ///< plateau of R_energy (or R_J) once the root moves [J/m^2]
+  double G_ss = not_available; ///< plateau of R_energy (or R_J) once the root moves [J/m^2]
   bool reached_steady_state = false;
   double wall_time_s = not_available;
   long n_dofs_or_particles = 0;
   double rdelta_rel_error_vs_eq2 = not_available; ///< relative L2 of R_J vs Eq. 2 where law known
-  std::vector<std::string> notes;    ///< diagnoses, unavailable columns and why
+  std::vector<std::string> notes;                 ///< diagnoses, unavailable columns and why
 };
 
 /// rcurve_<model>.csv with the columns of DESIGN.md section 5 (mm, N, J/m^2, J per m width).

@@ -16,12 +16,12 @@ struct Specimen {
 };
 
 struct Material {
-  double E_L = 13.4e9;             ///< along the beam [Pa]
-  double E_T = 0.050 * 13.4e9;     ///< normal to the crack plane [Pa]
-  double G_LT = 0.078 * 13.4e9;    ///< in-plane shear [Pa]
-  double nu_LT = 0.449;            ///< major Poisson ratio (nu_TL = nu_LT E_T / E_L)
-  bool plane_stress = true;        ///< else plane strain (out-of-plane constants then matter)
-  double density = 530;            ///< [kg/m^3], Douglas-fir at 12 % MC (dynamic models only)
+  double E_L = 13.4e9;          ///< along the beam [Pa]
+  double E_T = 0.050 * 13.4e9;  ///< normal to the crack plane [Pa]
+  double G_LT = 0.078 * 13.4e9; ///< in-plane shear [Pa]
+  double nu_LT = 0.449;         ///< major Poisson ratio (nu_TL = nu_LT E_T / E_L)
+  bool plane_stress = true;     ///< else plane strain (out-of-plane constants then matter)
+  double density = 530;         ///< [kg/m^3], Douglas-fir at 12 % MC (dynamic models only)
   void validate(const std::string& context = "Material") const;
   double nu_TL() const { return nu_LT * E_T / E_L; }
 };

@@ -1,6 +1,6 @@
 #pragma once
-// Bridging traction laws sigma(delta) (DESIGN.md section 1). SI units: opening in m, traction in Pa,
-// energies per unit crack area in J/m^2.
+// Bridging traction laws sigma(delta) (DESIGN.md section 1). SI units: opening in m, traction in
+// Pa, energies per unit crack area in J/m^2.
 //
 // A law is its monotonic-loading envelope. History (unloading to the origin: an elastic-damage
 // zone, seed Fig. 1B) and contact in closing are handled once, in respond(), for every law.
@@ -42,7 +42,8 @@ public:
   /// Largest envelope traction and the opening where it occurs.
   std::pair<double, double> peak() const;
   /// True when sigma(0+) > 0 (linear or exponential softening): the law has no elastic rise, so a
-  /// simulation must regularize it (see PiecewiseLinearLaw::with_elastic_rise) or treat it as rigid.
+  /// simulation must regularize it (see PiecewiseLinearLaw::with_elastic_rise) or treat it as
+  /// rigid.
   bool rigid_at_zero_opening() const { return envelope(0.0) > 0.0; }
   /// Slope of the first elastic rise sigma(d1)/d1 [Pa/m]; +inf for a rigid law, 0 for none.
   double initial_stiffness() const;

@@ -1,0 +1,35 @@
+#pragma once
+// Scene items: each declares its section and runs. The simulation items live beside their
+// libraries' owners (item_fem.cc, item_mpm.cc, item_beam.cc).
+#include "fiberbridge/app/scene_context.h"
+
+namespace fiberbridge::app {
+
+void declare_data_section(dealii::ParameterHandler& prm);
+void declare_fit_section(dealii::ParameterHandler& prm);
+void declare_rank_section(dealii::ParameterHandler& prm);
+void declare_bridging_section(dealii::ParameterHandler& prm);
+void declare_law_section(dealii::ParameterHandler& prm);
+void declare_specimen_sections(dealii::ParameterHandler& prm);
+
+void run_extract_item(SceneContext& ctx);
+void run_fit_item(SceneContext& ctx);
+void run_rank_item(SceneContext& ctx);
+void run_bridging_item(SceneContext& ctx);
+void declare_compare_section(dealii::ParameterHandler& prm);
+void run_compare_item(SceneContext& ctx);
+
+#ifdef FIBERBRIDGE_HAVE_BEAM
+void declare_beam_section(dealii::ParameterHandler& prm);
+void run_beam_item(SceneContext& ctx);
+#endif
+#ifdef FIBERBRIDGE_HAVE_FEM
+void declare_fem_section(dealii::ParameterHandler& prm);
+void run_fem_item(SceneContext& ctx);
+#endif
+#ifdef FIBERBRIDGE_HAVE_MPM
+void declare_mpm_section(dealii::ParameterHandler& prm);
+void run_mpm_item(SceneContext& ctx);
+#endif
+
+} // namespace fiberbridge::app

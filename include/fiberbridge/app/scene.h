@@ -1,0 +1,19 @@
+#pragma once
+// Running a .prm scene (DESIGN.md section 5): declare every section, parse the file (unknown
+// entries are errors), apply --set overrides, then run only the items listed in `Run`.
+#include <string>
+#include <vector>
+
+namespace fiberbridge::app {
+
+/// Runs the scene; returns the output directory. Throws InputError/ComputationError.
+std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides);
+
+/// Writes the full documented parameter set (every section, defaults) to `out`.
+void print_scene_parameters(std::ostream& out);
+
+/// Resolves a data path from a scene: as given when it exists relative to the working directory,
+/// else relative to the scene file's directory.
+std::string resolve_scene_path(const std::string& path, const std::string& scene_file);
+
+} // namespace fiberbridge::app

@@ -1,0 +1,165 @@
+#include "fiberbridge/app/comparison.h"
+
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fiberbridge::app {
+
+namespace {
+
+/// Piecewise-linear interpolation of y(x) on increasing x; NaN outside.
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
+  if (x.empty() || at < x.front() || at > x.back())
+    return law::not_available;
+  const auto it = std::lower_bound(x.begin(), x.end(), at);
+  const std::size_t i = static_cast<std::size_t>(it - x.begin());
+  if (i == 0)
+    return y[0];
+  const double t = (at - x[i - 1]) / (x[i] - x[i - 1]);
+  return y[i - 1] + t * (y[i] - y[i - 1]);
+}
+
+/// Tip position where the notch root first moves (end of the developing part); +inf if never.
+double end_of_development(const law::SimulationResult& r) {
+  if (r.rcurve.empty())
+    return 0;
+  const double root0 = r.rcurve.front().root;
+  for (const auto& p : r.rcurve)
+    if (std::isfinite(p.root) && std::isfinite(root0) && p.root > root0 + 1e-9)
+      return p.a;
+  return std::numeric_limits<double>::infinity();
+}
+
+double peak_load(const law::SimulationResult& r) {
+  double m = 0;
+  for (const auto& p : r.rcurve)
+    if (std::isfinite(p.load))
+      m = std::max(m, p.load);
+  return m;
+}
+
+double field(const law::RCurvePoint& p, const std::string& q) {
+  if (q == "R_energy")
+    return p.R_energy;
+  if (q == "R_J")
+    return p.R_J;
+  if (q == "R_eq2")
+    return p.R_eq2;
+  return p.delta_root;
+}
+
+} // namespace
+
+std::vector<PairwiseDifference> compare_models(const law::SimulationResult& a,
+                                               const law::SimulationResult& b) {
+  std::vector<PairwiseDifference> out;
+  const double a_end = std::min(end_of_development(a), end_of_development(b));
+  for (const std::string q : {"R_energy", "R_J", "R_eq2", "delta_root"}) {
+    // b's curve as a function of a (rows with increasing a, finite values).
+    std::vector<double> xb, yb;
+    for (const auto& p : b.rcurve) {
+      const double v = field(p, q);
+      if (std::isfinite(p.a) && std::isfinite(v) && (xb.empty() || p.a > xb.back())) {
+        xb.push_back(p.a);
+        yb.push_back(v);
+      }
+    }
+    double num = 0, den = 0;
+    int n = 0;
+    for (const auto& p : a.rcurve) {
+      const double va = field(p, q);
+      if (!std::isfinite(p.a) || !std::isfinite(va) || p.a > a_end)
+        continue;
+      const double vb = interpolate(xb, yb, p.a);
+      if (!std::isfinite(vb))
+        continue;
+      num += (vb - va) * (vb - va);
+      den += va * va;
+      ++n;
+    }
+    PairwiseDifference d;
+    d.model_a = a.model;
+    d.model_b = b.model;
+    d.quantity = q;
+    d.n_points = n;
+    d.rel_l2_developing = den > 0 ? std::sqrt(num / den) : law::not_available;
+    d.plateau_rel_diff = (b.G_ss - a.G_ss) / a.G_ss;
+    const double pa = peak_load(a), pb = peak_load(b);
+    d.peak_load_rel_diff = pa > 0 ? (pb - pa) / pa : law::not_available;
+    out.push_back(d);
+  }
+  return out;
+}
+
+std::vector<ClosedLoopRow> closed_loop(const law::SimulationResult& r, const law::TractionLaw& law,
+                                       double j_tip, int n, int k) {
+  const double dc = law.critical_opening();
+  if (!(dc > 0))
+    throw ComputationError("closed loop: the law has no bridging (delta_c = 0): nothing to "
+                           "recover");
+  // True law on the extraction grid.
+  std::vector<double> grid(n + 1), truth(n + 1);
+  for (int i = 0; i <= n; ++i) {
+    grid[i] = dc * i / n;
+    truth[i] = law.envelope(grid[i]);
+  }
+  const auto [true_peak, true_peak_delta] = law.peak();
+  std::vector<ClosedLoopRow> rows;
+  for (const std::string source : {"R_energy", "R_eq2"}) {
+    analysis::RDeltaCurve c;
+    c.n_replicates = 1;
+    // R is flat at J_tip before the first advance (no zone yet): start the curve there.
+    c.delta.push_back(0);
+    c.R.push_back(j_tip);
+    int below_dc = 0;
+    for (const auto& p : r.rcurve) {
+      const double R = source == "R_energy" ? p.R_energy : p.R_eq2;
+      if (!std::isfinite(p.delta_root) || !std::isfinite(R) || !(p.delta_root > c.delta.back()))
+        continue;
+      c.delta.push_back(p.delta_root);
+      c.R.push_back(R);
+      below_dc += p.delta_root < dc;
+    }
+    if (below_dc < n / 4)
+      throw ComputationError("closed loop for " + r.model + ": only " + std::to_string(below_dc) +
+                             " distinct delta_root values below "
+                             "delta_c; refine the tip advance or lower the Compare intervals (" +
+                             std::to_string(n) + ")");
+    if (c.delta.back() < dc) {
+      // The run stopped at the plateau's onset: R' = 0 beyond delta_c is what Eq. 5 assumes.
+      c.delta.push_back(dc * 1.05);
+      c.R.push_back(c.R.back());
+    }
+    c.R_std.assign(c.R.size(), 0.0);
+    const auto laws = analysis::extract_cohesive_laws(c, dc, n, k);
+    for (const std::string method : {"eq6", "dRdd"}) {
+      const auto& s = method == "eq6" ? laws.sigma_eq6 : laws.sigma_dRdd;
+      ClosedLoopRow row;
+      row.model = r.model;
+      row.r_source = source;
+      row.method = method;
+      const auto it = std::max_element(s.begin(), s.end());
+      row.peak_kPa = *it / units::kPa;
+      row.delta_at_peak_mm = laws.delta[static_cast<std::size_t>(it - s.begin())] / units::mm;
+      row.peak_true_kPa = true_peak / units::kPa;
+      row.delta_at_peak_true_mm = true_peak_delta / units::mm;
+      row.area_J_m2 = method == "eq6" ? laws.area_eq6 : laws.area_dRdd;
+      row.area_true_J_m2 = law.area();
+      double num = 0, den = 0;
+      for (int i = 0; i <= n; ++i) {
+        num += (s[i] - truth[i]) * (s[i] - truth[i]);
+        den += truth[i] * truth[i];
+      }
+      row.curve_rel_l2 = std::sqrt(num / den);
+      row.laws = laws;
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
+} // namespace fiberbridge::app

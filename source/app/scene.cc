@@ -1,0 +1,203 @@
+#include "fiberbridge/app/scene.h"
+
+#include "fiberbridge/app/analysis_steps.h"
+#include "fiberbridge/app/items.h"
+#include "fiberbridge/core/error.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+namespace fiberbridge::app {
+
+namespace {
+
+void declare_shared(dealii::ParameterHandler&) {}
+
+} // namespace
+
+const std::vector<SceneItem>& scene_items() {
+  // Order = execution order: analysis first (fit hands its law on), then simulations, then the
+  // items that compare them.
+  static const std::vector<SceneItem> items = {
+      {"extract", &declare_data_section, &run_extract_item},
+      {"fit", &declare_fit_section, &run_fit_item},
+      {"rank", &declare_rank_section, &run_rank_item},
+      {"bridging", &declare_bridging_section, &run_bridging_item},
+#ifdef FIBERBRIDGE_HAVE_BEAM
+      {"beam", &declare_beam_section, &run_beam_item},
+#endif
+#ifdef FIBERBRIDGE_HAVE_FEM
+      {"fem", &declare_fem_section, &run_fem_item},
+#endif
+#ifdef FIBERBRIDGE_HAVE_MPM
+      {"mpm", &declare_mpm_section, &run_mpm_item},
+#endif
+      {"compare", &declare_compare_section, &run_compare_item},
+  };
+  return items;
+}
+
+namespace {
+
+const char* all_item_names = "extract, fit, rank, bridging, fem, mpm, beam, compare, study";
+
+void declare_everything(dealii::ParameterHandler& prm) {
+  prm.declare_entry("Output directory", "output", dealii::Patterns::Anything(),
+                    "Where results go (created if missing).");
+  prm.declare_entry("Run", "", dealii::Patterns::Anything(),
+                    std::string("Comma-separated items to run, from: ") + all_item_names +
+                        ". Only these are built and run.");
+  declare_law_section(prm);
+  declare_specimen_sections(prm);
+  for (const auto& item : scene_items())
+    if (item.declare)
+      item.declare(prm);
+  declare_shared(prm);
+}
+
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    const auto b = item.find_first_not_of(" \t");
+    if (b == std::string::npos)
+      continue;
+    out.push_back(item.substr(b, item.find_last_not_of(" \t") - b + 1));
+  }
+  return out;
+}
+
+/// --set "Section/Sub/Key=value": enter the sections, set() validates against the pattern.
+void apply_override(dealii::ParameterHandler& prm, const std::string& o) {
+  const auto eq = o.find('=');
+  if (eq == std::string::npos)
+    throw InputError("--set '" + o + "': expected \"Section/Key=value\"");
+  std::string path = o.substr(0, eq);
+  const std::string value = o.substr(eq + 1);
+  std::vector<std::string> parts;
+  std::stringstream in(path);
+  std::string p;
+  while (std::getline(in, p, '/'))
+    parts.push_back(p);
+  if (parts.empty() || parts.back().empty())
+    throw InputError("--set '" + o + "': no key before '='");
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+    prm.enter_subsection(parts[i]);
+  try {
+    prm.set(parts.back(), value);
+  } catch (const std::exception& e) {
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+      prm.leave_subsection();
+    throw InputError("--set '" + o + "': unknown key or value not allowed for it");
+  }
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+    prm.leave_subsection();
+}
+
+/// deal.II's exception text is many lines; keep the line that says what was wrong.
+std::string condense(const std::string& what) {
+  std::stringstream in(what);
+  std::string line, best;
+  while (std::getline(in, line)) {
+    const auto b = line.find_first_not_of(" \t");
+    if (b == std::string::npos)
+      continue;
+    line = line.substr(b);
+    if (line.rfind("---", 0) == 0 || line.rfind("An error occurred", 0) == 0 ||
+        line.rfind("Additional information", 0) == 0 || line.rfind("The violated", 0) == 0 ||
+        line.rfind("Stacktrace", 0) == 0 || line.rfind("#", 0) == 0 ||
+        line.find("in function") != std::string::npos)
+      continue;
+    best += (best.empty() ? "" : " ") + line;
+    if (best.size() > 300)
+      break;
+  }
+  return best.empty() ? what : best;
+}
+
+} // namespace
+
+std::string resolve_scene_path(const std::string& path, const std::string& scene_file) {
+  namespace fs = std::filesystem;
+  if (path.empty() || fs::path(path).is_absolute() || fs::exists(path))
+    return path;
+  const fs::path alt = fs::path(scene_file).parent_path() / path;
+  return fs::exists(alt) ? alt.string() : path;
+}
+
+void print_scene_parameters(std::ostream& out) {
+  dealii::ParameterHandler prm;
+  declare_everything(prm);
+  prm.print_parameters(out, dealii::ParameterHandler::PRM);
+}
+
+std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides) {
+  const auto t0 = std::chrono::steady_clock::now();
+  dealii::ParameterHandler prm;
+  declare_everything(prm);
+  if (!std::filesystem::exists(prm_file))
+    throw InputError(prm_file + ": scene file not found");
+  try {
+    // Unknown entries and values that do not match their pattern are errors (a typo in a scene
+    // must not silently fall back to a default).
+    prm.parse_input(prm_file, "", false, true);
+  } catch (const std::exception& e) {
+    throw InputError(prm_file + ": " + condense(e.what()));
+  }
+  for (const auto& o : overrides)
+    apply_override(prm, o);
+
+  const auto wanted = split_list(prm.get("Run"));
+  if (wanted.empty())
+    throw InputError(prm_file + ": 'Run' lists no items; choose from " +
+                     std::string(all_item_names));
+  std::set<std::string> wanted_set(wanted.begin(), wanted.end());
+  for (const auto& w : wanted) {
+    bool known = false;
+    for (const auto& item : scene_items())
+      known = known || item.name == w;
+    if (!known) {
+      const std::string all = all_item_names;
+      if (all.find(w) != std::string::npos)
+        throw InputError(prm_file + ": Run item '" + w +
+                         "' is not available in this build (its module is not built yet)");
+      throw InputError(prm_file + ": unknown Run item '" + w + "', expected one of " + all);
+    }
+  }
+
+  SceneContext ctx;
+  ctx.prm = &prm;
+  ctx.scene_file = prm_file;
+  ctx.output_dir = prm.get("Output directory");
+  ensure_directory(ctx.output_dir);
+  remove_stale_summary(ctx.output_dir);
+  ctx.summary["scene"] = prm_file;
+  ctx.summary["run"] = wanted;
+  ctx.summary["plots"] = Json::array();
+  for (const auto& item : scene_items()) {
+    if (!wanted_set.count(item.name))
+      continue;
+    std::cerr << "fiberbridge: running " << item.name << "\n";
+    const auto ti = std::chrono::steady_clock::now();
+    item.run(ctx);
+    ctx.summary["item_wall_time_s"][item.name] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - ti).count();
+  }
+  ctx.summary["wall_time_s"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  {
+    std::ofstream used(ctx.out("parameters_used.prm"));
+    prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
+  }
+  write_json_atomically(ctx.out("summary.json"), ctx.summary);
+  return ctx.output_dir;
+}
+
+} // namespace fiberbridge::app
