@@ -39,6 +39,7 @@ const std::vector<SceneItem>& scene_items() {
       {"mpm", &declare_mpm_section, &run_mpm_item},
 #endif
       {"compare", &declare_compare_section, &run_compare_item},
+      {"study", &declare_study_section, &run_study_item},
   };
   return items;
 }

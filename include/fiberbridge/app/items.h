@@ -18,6 +18,8 @@ void run_rank_item(SceneContext& ctx);
 void run_bridging_item(SceneContext& ctx);
 void declare_compare_section(dealii::ParameterHandler& prm);
 void run_compare_item(SceneContext& ctx);
+void declare_study_section(dealii::ParameterHandler& prm);
+void run_study_item(SceneContext& ctx);
 
 #ifdef FIBERBRIDGE_HAVE_BEAM
 void declare_beam_section(dealii::ParameterHandler& prm);

@@ -1,0 +1,345 @@
+// Scene item `study`: error against run time (refinement ladders per model) and the stability
+// matrix (stiff, extreme and ill-posed cases). Both drive the simulation items themselves with
+// parameter overrides, so a study measures exactly what a user's scene would run.
+#include "fiberbridge/app/items.h"
+#include "fiberbridge/core/csv.h"
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/plot.h"
+
+#include <deal.II/base/patterns.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace fiberbridge::app {
+
+namespace {
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, sep)) {
+    const auto b = item.find_first_not_of(" \t");
+    if (b != std::string::npos)
+      out.push_back(item.substr(b, item.find_last_not_of(" \t") - b + 1));
+  }
+  return out;
+}
+
+/// An override "Section/Key=value" applied to the shared ParameterHandler and undone afterwards.
+class ScopedOverrides {
+public:
+  ScopedOverrides(dealii::ParameterHandler& prm, const std::vector<std::string>& sets,
+                  const std::string& context)
+      : prm_(prm) {
+    for (const auto& s : sets) {
+      const auto eq = s.find('=');
+      if (eq == std::string::npos)
+        throw InputError(context + ": '" + s + "' is not Section/Key=value");
+      auto path = split(s.substr(0, eq), '/');
+      const std::string value = s.substr(eq + 1);
+      const auto b = value.find_first_not_of(" \t");
+      const std::string v = b == std::string::npos ? "" : value.substr(b);
+      if (path.empty())
+        throw InputError(context + ": '" + s + "' names no key");
+      const std::string key = path.back();
+      path.pop_back();
+      for (const auto& p : path)
+        prm_.enter_subsection(p);
+      std::string old;
+      try {
+        old = prm_.get(key);
+        prm_.set(key, v);
+      } catch (const std::exception&) {
+        for (std::size_t i = 0; i < path.size(); ++i)
+          prm_.leave_subsection();
+        throw InputError(context + ": '" + s + "': unknown key or value not allowed");
+      }
+      for (std::size_t i = 0; i < path.size(); ++i)
+        prm_.leave_subsection();
+      undo_.push_back({path, key, old});
+    }
+  }
+  ~ScopedOverrides() {
+    for (auto it = undo_.rbegin(); it != undo_.rend(); ++it) {
+      for (const auto& p : it->path)
+        prm_.enter_subsection(p);
+      prm_.set(it->key, it->old);
+      for (std::size_t i = 0; i < it->path.size(); ++i)
+        prm_.leave_subsection();
+    }
+  }
+
+private:
+  struct Undo {
+    std::vector<std::string> path;
+    std::string key, old;
+  };
+  dealii::ParameterHandler& prm_;
+  std::vector<Undo> undo_;
+};
+
+const SceneItem* find_item(const std::string& name) {
+  for (const auto& i : scene_items())
+    if (i.name == name)
+      return &i;
+  return nullptr;
+}
+
+std::string section_of(const std::string& model) {
+  if (model == "fem")
+    return "FEM";
+  if (model == "mpm")
+    return "MPM";
+  return "Beam";
+}
+
+/// Runs one simulation item in its own output folder with the scene's law and overrides.
+law::SimulationResult run_model(SceneContext& parent, const std::string& model,
+                                const std::string& dir, bool use_fitted_law) {
+  const SceneItem* item = find_item(model);
+  if (!item)
+    throw InputError("Study: model '" + model + "' is not available in this build");
+  SceneContext sub;
+  sub.prm = parent.prm;
+  sub.scene_file = parent.scene_file;
+  sub.output_dir = dir;
+  if (use_fitted_law) {
+    sub.fitted_law = parent.fitted_law;
+    sub.fitted_j_tip = parent.fitted_j_tip;
+  }
+  std::filesystem::create_directories(dir);
+  item->run(sub);
+  return sub.results.at(model);
+}
+
+struct Case {
+  std::string name;
+  std::string description;
+  std::vector<std::string> sets;
+};
+
+/// DESIGN.md section 3 "Stability on stiff and extreme cases".
+std::vector<Case> stability_cases() {
+  return {
+      {"stiff_initial_slope",
+       "trilinear with d1 = 1e-4 mm (initial slope 6.6e12 Pa/m)",
+       {"Cohesive law/Type=trilinear", "Cohesive law/Points=0.0001:661, 1.0:187",
+        "Cohesive law/Delta c=6"}},
+      {"brittle_limit",
+       "linear softening with 0.5 J/m^2 of bridging",
+       {"Cohesive law/Type=linear", "Cohesive law/Peak stress=50", "Cohesive law/Delta c=0.02"}},
+      {"zone_longer_than_ligament",
+       "PVA control law on a 150 mm beam (50 mm ligament)",
+       {"Cohesive law/Type=trilinear", "Cohesive law/Points=0.1:661, 1.0:187",
+        "Cohesive law/Delta c=6", "Specimen/Length=150"}},
+      {"snap_back",
+       "strong, short linear law and a short pre-crack (unstable growth)",
+       {"Cohesive law/Type=linear", "Cohesive law/Peak stress=3000", "Cohesive law/Delta c=0.1",
+        "Specimen/Initial crack=40"}},
+      {"extreme_orthotropy",
+       "E_L/E_T = 50 (E_T = 268 MPa)",
+       {"Cohesive law/Type=trilinear", "Cohesive law/Points=0.1:661, 1.0:187",
+        "Cohesive law/Delta c=6", "Material/E_T=268"}},
+      {"tiny_delta_c",
+       "linear softening, delta_c = 0.01 mm, 2 MPa",
+       {"Cohesive law/Type=linear", "Cohesive law/Peak stress=2000", "Cohesive law/Delta c=0.01"}},
+      {"huge_delta_c",
+       "PVA peaks with delta_c = 60 mm",
+       {"Cohesive law/Type=trilinear", "Cohesive law/Points=0.1:661, 1.0:187",
+        "Cohesive law/Delta c=60"}},
+      {"near_zero_sigma2",
+       "trilinear with sigma2 = 0.5 kPa",
+       {"Cohesive law/Type=trilinear", "Cohesive law/Points=0.1:661, 1.0:0.5",
+        "Cohesive law/Delta c=6"}},
+  };
+}
+
+} // namespace
+
+void declare_study_section(dealii::ParameterHandler& prm) {
+  prm.enter_subsection("Study");
+  prm.declare_entry("Ladder models", "", dealii::Patterns::Anything(),
+                    "Models (beam, fem, mpm) whose refinement ladders run: error vs wall time.");
+  prm.declare_entry("Beam ladder", "Number of elements = 50, 100, 200, 400",
+                    dealii::Patterns::Anything(),
+                    "'Key = v1, v2, ...' (keys of the Beam section; several keys separated by "
+                    "';' vary together).");
+  prm.declare_entry("FEM ladder", "", dealii::Patterns::Anything(),
+                    "As Beam ladder, keys of the FEM section.");
+  prm.declare_entry("MPM ladder", "", dealii::Patterns::Anything(),
+                    "As Beam ladder, keys of the MPM section.");
+  prm.declare_entry("Stability models", "", dealii::Patterns::Anything(),
+                    "Models that run the stability matrix (empty = none).");
+  prm.declare_entry("Stability cases", "all", dealii::Patterns::Anything(),
+                    "Comma-separated case names, or all: stiff_initial_slope, brittle_limit, "
+                    "zone_longer_than_ligament, snap_back, extreme_orthotropy, tiny_delta_c, "
+                    "huge_delta_c, near_zero_sigma2.");
+  prm.declare_entry("Plateau tolerance", "0.05", dealii::Patterns::Double(0),
+                    "A converged run whose G_ss differs from J_tip + area by more than this "
+                    "relative amount is reported 'suspect'.");
+  prm.leave_subsection();
+}
+
+void run_study_item(SceneContext& ctx) {
+  auto& prm = *ctx.prm;
+  prm.enter_subsection("Study");
+  const auto ladder_models = split(prm.get("Ladder models"), ',');
+  std::map<std::string, std::string> ladders{{"beam", prm.get("Beam ladder")},
+                                             {"fem", prm.get("FEM ladder")},
+                                             {"mpm", prm.get("MPM ladder")}};
+  const auto stability_models = split(prm.get("Stability models"), ',');
+  const std::string case_list = prm.get("Stability cases");
+  const double plateau_tol = prm.get_double("Plateau tolerance");
+  prm.leave_subsection();
+  if (ladder_models.empty() && stability_models.empty())
+    throw InputError("Study: neither 'Ladder models' nor 'Stability models' names a model");
+  Json block = Json::object();
+
+  // ---- error against run time
+  if (!ladder_models.empty()) {
+    CsvWriter w(ctx.out("study_error_vs_time.csv"),
+                {"model", "level", "n_dofs_or_particles", "wall_time_s", "rdelta_rel_error",
+                 "G_ss_rel_error"},
+                {"settings per level in summary.json (study.error_vs_time)",
+                 "rdelta_rel_error: relative L2 of R_J (Eq. 2 with J measured) against Eq. 2 of "
+                 "the law over the developing part; G_ss_rel_error against J_tip + law area"});
+    Json rows = Json::array();
+    std::string plot = gnuplot_png_preamble("study_error_vs_time.png");
+    plot += "set logscale xy\nset xlabel 'wall time (s)'\nset ylabel 'relative error'\n"
+            "set key top right\nplot ";
+    bool first_plot = true;
+    const double G_law = ctx.j_tip() + ctx.law()->area();
+    for (const auto& model : ladder_models) {
+      const auto spec = split(ladders[model], ';');
+      if (spec.empty())
+        throw InputError("Study/" + section_of(model) + " ladder: empty for model '" + model +
+                         "' listed in Ladder models");
+      std::vector<std::pair<std::string, std::vector<std::string>>> keys;
+      std::size_t levels = 0;
+      for (const auto& s : spec) {
+        const auto eq = s.find('=');
+        if (eq == std::string::npos)
+          throw InputError("Study/" + section_of(model) + " ladder: '" + s +
+                           "' is not 'Key = v1, v2, ...'");
+        auto key = s.substr(0, eq);
+        key = key.substr(0, key.find_last_not_of(" \t") + 1);
+        const auto values = split(s.substr(eq + 1), ',');
+        if (levels && values.size() != levels)
+          throw InputError("Study/" + section_of(model) +
+                           " ladder: keys varied together need the same number of values");
+        levels = values.size();
+        keys.push_back({key, values});
+      }
+      const std::string csv = "study_" + model + ".csv";
+      CsvWriter mw(ctx.out(csv), {"wall_time_s", "rdelta_rel_error", "G_ss_rel_error"},
+                   {model + " ladder"});
+      for (std::size_t l = 0; l < levels; ++l) {
+        std::vector<std::string> sets;
+        std::string setting;
+        for (const auto& [k, v] : keys) {
+          sets.push_back(section_of(model) + "/" + k + "=" + v[l]);
+          setting += (setting.empty() ? "" : "; ") + k + " = " + v[l];
+        }
+        std::cerr << "study: " << model << " level " << l << " (" << setting << ")\n";
+        ScopedOverrides o(prm, sets, "Study/" + section_of(model) + " ladder");
+        const auto r =
+            run_model(ctx, model, ctx.out("study/" + model + "_level" + std::to_string(l)), true);
+        const double g_err = std::abs(r.G_ss - G_law) / G_law;
+        w.row({model, std::to_string(l)},
+              {double(r.n_dofs_or_particles), r.wall_time_s, r.rdelta_rel_error_vs_eq2, g_err});
+        mw.row({r.wall_time_s, r.rdelta_rel_error_vs_eq2, g_err});
+        rows.push_back({{"model", model},
+                        {"level", l},
+                        {"setting", setting},
+                        {"n_dofs_or_particles", r.n_dofs_or_particles},
+                        {"wall_time_s", json_number(r.wall_time_s)},
+                        {"rdelta_rel_error", json_number(r.rdelta_rel_error_vs_eq2)},
+                        {"G_ss_rel_error", json_number(g_err)},
+                        {"reached_steady_state", r.reached_steady_state}});
+      }
+      mw.close();
+      plot += std::string(first_plot ? "" : ", ") + "'" + csv +
+              "' using 1:2 with linespoints lw 2 title '" + model + " R_J vs Eq. 2', '" + csv +
+              "' using 1:3 with linespoints lw 2 dt 2 title '" + model + " G_{ss}'";
+      first_plot = false;
+    }
+    w.close();
+    plot += "\n";
+    if (run_gnuplot(ctx.output_dir, plot))
+      ctx.summary["plots"].push_back("study_error_vs_time.png");
+    block["error_vs_time"] = rows;
+  }
+
+  // ---- stability matrix
+  if (!stability_models.empty()) {
+    std::vector<Case> cases;
+    for (const auto& c : stability_cases())
+      if (case_list == "all" || ("," + case_list + ",").find(c.name) != std::string::npos)
+        cases.push_back(c);
+    if (cases.empty())
+      throw InputError("Study/Stability cases: no known case in '" + case_list + "'");
+    CsvWriter w(ctx.out("stability.csv"), {"case", "model", "outcome", "diagnosis", "wall_time_s"},
+                {"outcome: converged (plateau within the tolerance of J_tip + area) | diagnosed "
+                 "stop (the model said why it stopped) | suspect | failure"});
+    Json rows = Json::array();
+    for (const auto& c : cases)
+      for (const auto& model : stability_models) {
+        std::cerr << "study: stability " << c.name << " with " << model << "\n";
+        std::string outcome, diagnosis;
+        const auto t0 = std::chrono::steady_clock::now();
+        try {
+          ScopedOverrides o(prm, c.sets, "Study stability case " + c.name);
+          const auto r =
+              run_model(ctx, model, ctx.out("study/stability_" + c.name + "_" + model), false);
+          SceneContext probe;
+          probe.prm = ctx.prm;
+          probe.scene_file = ctx.scene_file;
+          const double G_law = probe.j_tip() + probe.law()->area();
+          bool finite = !r.rcurve.empty();
+          for (const auto& p : r.rcurve)
+            finite = finite && std::isfinite(p.a) && std::isfinite(p.load);
+          for (const auto& n : r.notes)
+            diagnosis += (diagnosis.empty() ? "" : " | ") + n;
+          if (!finite) {
+            outcome = "failure";
+            diagnosis = "non-finite or empty R curve. " + diagnosis;
+          } else if (r.reached_steady_state) {
+            const double err = std::abs(r.G_ss - G_law) / G_law;
+            outcome = err <= plateau_tol ? "converged" : "suspect";
+            diagnosis = "G_ss " + std::to_string(r.G_ss) + " J/m^2 vs " + std::to_string(G_law) +
+                        " (rel. " + std::to_string(err) + "). " + diagnosis;
+          } else {
+            outcome = diagnosis.empty() ? "failure" : "diagnosed stop";
+            if (diagnosis.empty())
+              diagnosis = "no steady state and no diagnosis from the model";
+          }
+        } catch (const std::exception& e) {
+          outcome = "diagnosed stop";
+          diagnosis = e.what();
+        }
+        for (auto& ch : diagnosis)
+          if (ch == ',' || ch == '\n')
+            ch = ';';
+        const double t =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        w.row({c.name, model, outcome, diagnosis}, {t});
+        rows.push_back({{"case", c.name},
+                        {"description", c.description},
+                        {"model", model},
+                        {"outcome", outcome},
+                        {"diagnosis", diagnosis},
+                        {"wall_time_s", t}});
+      }
+    w.close();
+    block["stability"] = rows;
+  }
+  ctx.summary["study"] = block;
+}
+
+} // namespace fiberbridge::app
