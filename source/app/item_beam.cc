@@ -1,0 +1,88 @@
+// Scene item "beam": the fast beam model of the DCB (DESIGN.md section 2), section "Beam".
+#include "fiberbridge/app/items.h"
+#include "fiberbridge/app/scene_context.h"
+#include "fiberbridge/beam/dcb_beam.h"
+#include "fiberbridge/core/units.h"
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/patterns.h>
+
+#include <iostream>
+#include <sstream>
+
+namespace fiberbridge::app {
+
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+using units::mm;
+
+namespace {
+/// Shortest decimal form of a default ("0.5", "1e-10"), as a user would type it.
+std::string default_text(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+} // namespace
+
+void declare_beam_section(dealii::ParameterHandler& prm) {
+  const beam::BeamParameters d;
+  prm.enter_subsection("Beam");
+  prm.declare_entry("Number of elements", std::to_string(d.n_elements), Integer(4, 10000000),
+                    "Timoshenko elements along the ligament from the initial crack to the far "
+                    "end (the free notch is one exact element). Cost grows linearly.");
+  prm.declare_entry("Tip advance", default_text(d.tip_advance / mm), Double(0),
+                    "Crack growth between recorded states in mm (rounded to whole elements, at "
+                    "least one). The external work is integrated over these steps.");
+  prm.declare_entry("Foundation modulus", "0", Double(0),
+                    "Winkler foundation of the intact ligament in MPa/mm, acting on the opening. "
+                    "0 = calibrated so that the arm's root rotation matches corrected beam "
+                    "theory (Hashemi, Kinloch & Williams 1990).");
+  prm.declare_entry("Shear coefficient", default_text(d.shear_coefficient), Double(0),
+                    "Timoshenko shear coefficient of the rectangular arm (5/6).");
+  prm.declare_entry("Minimum ligament", "0", Double(0),
+                    "Stop when the ligament ahead of the tip is shorter than this, in mm; 0 = the "
+                    "specimen height.");
+  prm.declare_entry("Steady state window", default_text(d.steady_state_window / mm), Double(0),
+                    "Steady state is declared when the notch root has advanced this far (mm) "
+                    "and R_energy is flat over it; G_ss is its mean there.");
+  prm.declare_entry("Plateau tolerance", default_text(d.plateau_tolerance), Double(0, 1),
+                    "Relative difference allowed between the mean R_energy of the two halves "
+                    "of the steady-state window, and between R_energy and J_ff over it.");
+  prm.declare_entry("Newton tolerance", default_text(d.newton_tolerance), Double(0, 0.01),
+                    "Relative residual (to the initiation load) and relative tip-opening error "
+                    "at which Newton stops.");
+  prm.declare_entry("Newton iterations", std::to_string(d.max_newton_iterations), Integer(1, 10000),
+                    "Newton iterations per tip position before giving up.");
+  prm.leave_subsection();
+}
+
+namespace {
+beam::BeamParameters parse_beam_section(dealii::ParameterHandler& prm) {
+  beam::BeamParameters p;
+  prm.enter_subsection("Beam");
+  p.n_elements = prm.get_integer("Number of elements");
+  p.tip_advance = prm.get_double("Tip advance") * mm;
+  // MPa/mm = 1e9 Pa/m.
+  p.foundation_modulus = prm.get_double("Foundation modulus") * 1e9;
+  p.shear_coefficient = prm.get_double("Shear coefficient");
+  p.minimum_ligament = prm.get_double("Minimum ligament") * mm;
+  p.steady_state_window = prm.get_double("Steady state window") * mm;
+  p.plateau_tolerance = prm.get_double("Plateau tolerance");
+  p.newton_tolerance = prm.get_double("Newton tolerance");
+  p.max_newton_iterations = prm.get_integer("Newton iterations");
+  prm.leave_subsection();
+  p.validate("Beam");
+  return p;
+}
+} // namespace
+
+void run_beam_item(SceneContext& ctx) {
+  const beam::BeamParameters params = parse_beam_section(*ctx.prm);
+  auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
+  law::SimulationResult result =
+      beam::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params, progress);
+  report_simulation(ctx, std::move(result), "n_elements");
+}
+
+} // namespace fiberbridge::app
