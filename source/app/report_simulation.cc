@@ -25,7 +25,8 @@ void report_simulation(SceneContext& ctx, law::SimulationResult r, const std::st
                 {"rdelta_rel_error_vs_eq2", json_number(r.rdelta_rel_error_vs_eq2)},
                 {"tip_advances", r.rcurve.size()},
                 {"rcurve_file", csv},
-                {"notes", r.notes}};
+                {"notes", r.notes},
+                {"method", r.method}};
   if (!r.rcurve.empty()) {
     double peak_load = 0;
     for (const auto& p : r.rcurve)

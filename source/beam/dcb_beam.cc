@@ -686,25 +686,26 @@ void DcbBeamSolver::finish(SimulationResult& result, const std::vector<double>& 
                      " mm have a load-point opening below an earlier one; a displacement-"
                      "controlled test grows the crack there unstably (several advances in one "
                      "load step). The curve is the equilibrium path under crack-length control.");
-  note(result,
-       "beam model: Timoshenko arms (kappa " + fmt(prm_.shear_coefficient) + "), " +
-           std::to_string(prm_.n_elements) + " elements on the ligament, tip advance " +
-           fmt(rc.size() > 1 ? (rc[1].a - rc[0].a) / mm : 0) + " mm; Winkler foundation k = " +
-           fmt(arm_.foundation_modulus * 1e-9) + " GPa/m on the opening (" +
-           (prm_.foundation_modulus > 0
-                ? std::string("given")
-                : "calibrated to CBT root rotation chi h = " +
-                      fmt(law::cbt_chi(material_) * specimen_.arm_thickness() / mm) + " mm") +
-           "; 2 E_T/h = " + fmt(2 * material_.E_T / specimen_.arm_thickness() * 1e-9) +
-           " GPa/m); the law acts on the opening beyond delta_0 = sqrt(2 J_tip/k) = " +
-           fmt(delta_0_ / mm) + " mm");
-  note(result, "R_energy: d(W - U_rec)/(B da), central differences over the recorded states; "
-               "J_ff: section J at the load line (2/B)(P^2/(2S) - P theta_0) plus the far-end "
-               "foundation energy; the tip advances when the section J just behind the tip, less "
-               "the bridging potential there (the discrete tip J), reaches J_tip; the J_tip "
-               "column is the foundation energy k delta_tip^2/2 at the tip node; strain_energy: "
-               "both arms plus the foundation (the ligament's "
-               "through-thickness energy); kinetic_energy, time: not available (static model)");
+  result.method.push_back(
+      "beam model: Timoshenko arms (kappa " + fmt(prm_.shear_coefficient) + "), " +
+      std::to_string(prm_.n_elements) + " elements on the ligament, tip advance " +
+      fmt(rc.size() > 1 ? (rc[1].a - rc[0].a) / mm : 0) + " mm; Winkler foundation k = " +
+      fmt(arm_.foundation_modulus * 1e-9) + " GPa/m on the opening (" +
+      (prm_.foundation_modulus > 0
+           ? std::string("given")
+           : "calibrated to CBT root rotation chi h = " +
+                 fmt(law::cbt_chi(material_) * specimen_.arm_thickness() / mm) + " mm") +
+      "; 2 E_T/h = " + fmt(2 * material_.E_T / specimen_.arm_thickness() * 1e-9) +
+      " GPa/m); the law acts on the opening beyond delta_0 = sqrt(2 J_tip/k) = " +
+      fmt(delta_0_ / mm) + " mm");
+  result.method.push_back(
+      "R_energy: d(W - U_rec)/(B da), central differences over the recorded states; "
+      "J_ff: section J at the load line (2/B)(P^2/(2S) - P theta_0) plus the far-end "
+      "foundation energy; the tip advances when the section J just behind the tip, less "
+      "the bridging potential there (the discrete tip J), reaches J_tip; the J_tip "
+      "column is the foundation energy k delta_tip^2/2 at the tip node; strain_energy: "
+      "both arms plus the foundation (the ligament's "
+      "through-thickness energy); kinetic_energy, time: not available (static model)");
   if (!material_.plane_stress)
     note(result, "plane strain: the arms bend with E_L/(1 - nu_LT nu_TL)");
   result.rdelta_rel_error_vs_eq2 = law::rdelta_error_vs_eq2(result, *law_, j_tip_);

@@ -41,6 +41,7 @@ struct SimulationResult {
   long n_dofs_or_particles = 0;
   double rdelta_rel_error_vs_eq2 = not_available; ///< relative L2 of R_J vs Eq. 2 where law known
   std::vector<std::string> notes;                 ///< diagnoses, unavailable columns and why
+  std::vector<std::string> method; ///< how the model computes its columns (for the report)
 };
 
 /// rcurve_<model>.csv with the columns of DESIGN.md section 5 (mm, N, J/m^2, J per m width).
