@@ -2,6 +2,7 @@
 
 #include "fiberbridge/app/analysis_steps.h"
 #include "fiberbridge/app/items.h"
+#include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -197,7 +198,10 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
     std::ofstream used(ctx.out("parameters_used.prm"));
     prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
   }
+  const std::string report = text_report(ctx.summary);
+  write_file_atomically(ctx.out("report.txt"), report);
   write_json_atomically(ctx.out("summary.json"), ctx.summary);
+  std::cout << report;
   return ctx.output_dir;
 }
 

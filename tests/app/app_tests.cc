@@ -8,9 +8,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <vector>
 
 namespace fs = std::filesystem;
 using fiberbridge::Json;
@@ -177,4 +179,89 @@ TEST(Scenes, DefaultSceneRuns) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = read_json(work("default_scene") / "out" / "summary.json");
   EXPECT_TRUE(j.contains("trilinear"));
+}
+
+namespace {
+std::string scene(const std::string& f) {
+  return std::string(FIBERBRIDGE_TEST_DATA) + "/../scenes/" + f;
+}
+
+/// Rows of a CSV as maps column -> text (comments skipped).
+std::vector<std::map<std::string, std::string>> read_rows(const fs::path& p) {
+  std::ifstream in(p);
+  std::string line;
+  std::vector<std::string> header;
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#')
+      continue;
+    std::vector<std::string> cells;
+    std::stringstream ls(line);
+    std::string c;
+    while (std::getline(ls, c, ','))
+      cells.push_back(c);
+    if (header.empty()) {
+      header = cells;
+      continue;
+    }
+    std::map<std::string, std::string> row;
+    for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i)
+      row[header[i]] = cells[i];
+    rows.push_back(row);
+  }
+  return rows;
+}
+} // namespace
+
+TEST(Scenes, StudyLadderErrorDecreasesAndStabilityIsDiagnosed) {
+  const auto r = run("study_small", "run " + scene("study_beam_small.prm"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = read_rows(work("study_small") / "out" / "study_error_vs_time.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  for (const char* col :
+       {"model", "level", "n_dofs_or_particles", "wall_time_s", "rdelta_rel_error"})
+    EXPECT_TRUE(rows[0].count(col)) << col;
+  // Refinement must reduce the R_J error against the exact linear-softening R curve (the beam is
+  // second order: about 4x per halving; demand at least 2x so the test is about convergence, not
+  // the constant).
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    EXPECT_LT(std::stod(rows[i].at("rdelta_rel_error")),
+              0.5 * std::stod(rows[i - 1].at("rdelta_rel_error")));
+  const auto stab = read_rows(work("study_small") / "out" / "stability.csv");
+  ASSERT_EQ(stab.size(), 2u);
+  for (const auto& s : stab) {
+    EXPECT_NE(s.at("outcome"), "failure") << s.at("case");
+    EXPECT_NE(s.at("outcome"), "suspect") << s.at("case");
+  }
+  // The 50 mm ligament cannot hold the PVA zone: the run must end with that diagnosis.
+  EXPECT_EQ(stab[1].at("case"), "zone_longer_than_ligament");
+  EXPECT_EQ(stab[1].at("outcome"), "diagnosed stop");
+  EXPECT_NE(stab[1].at("diagnosis").find("ligament"), std::string::npos);
+}
+
+TEST(Scenes, CompareClosedLoopShowsTheOldMethodsError) {
+  const auto r = run("compare_beam", "run " + scene("compare_beam_pva.prm"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = read_json(work("compare_beam") / "out" / "summary.json");
+  ASSERT_TRUE(j.contains("compare"));
+  double eq6 = 0, drdd = 0, eq6_control = 0;
+  for (const auto& row : j["compare"]["closed_loop"]) {
+    if (row["R_source"] == "R_energy" && row["method"] == "eq6")
+      eq6 = row["curve_rel_l2"];
+    if (row["R_source"] == "R_energy" && row["method"] == "dRdd")
+      drdd = row["curve_rel_l2"];
+    if (row["R_source"] == "R_eq2" && row["method"] == "eq6")
+      eq6_control = row["curve_rel_l2"];
+  }
+  // The old method misses the PVA law by ~40 % (L2; its peak is ~1.85x low), Eq. 6 from the
+  // simulated energy R curve by ~6 % (measured 6.3 %: grid resolution of the 0.1 mm peak, 5.4 %
+  // in the Eq. 2 control, plus the non-self-similar zone growth). Bounds with margin: 10 % / 30 %.
+  EXPECT_LT(eq6, 0.10);
+  EXPECT_GT(drdd, 0.30);
+  EXPECT_LT(eq6_control, 0.10);
+  const auto rows = read_rows(work("compare_beam") / "out" / "rcurve_beam.csv");
+  ASSERT_GT(rows.size(), 100u);
+  for (const char* col : {"a_mm", "delta_root_mm", "R_energy_J_m2", "R_J_J_m2", "R_eq2_J_m2",
+                          "J_ff_J_m2", "load_N", "load_point_opening_mm"})
+    EXPECT_TRUE(rows[0].count(col)) << col;
 }

@@ -1,6 +1,8 @@
 #pragma once
 // Running a .prm scene (DESIGN.md section 5): declare every section, parse the file (unknown
 // entries are errors), apply --set overrides, then run only the items listed in `Run`.
+#include <nlohmann/json.hpp>
+
 #include <string>
 #include <vector>
 
@@ -11,6 +13,9 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
 
 /// Writes the full documented parameter set (every section, defaults) to `out`.
 void print_scene_parameters(std::ostream& out);
+
+/// The key numbers of a summary as a few lines of text (report.txt, and printed after a run).
+std::string text_report(const nlohmann::ordered_json& summary);
 
 /// Resolves a data path from a scene: as given when it exists relative to the working directory,
 /// else relative to the scene file's directory.
