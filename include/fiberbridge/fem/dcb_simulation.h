@@ -1,0 +1,90 @@
+#pragma once
+// deal.II finite-element model of the DCB specimen with cohesive segments inserted dynamically at
+// the propagating crack tip (DESIGN.md section 2, "FEM").
+//
+// Geometry: the beam runs from x = 0 to x = Length; the load line is the left end face x = 0
+// (no overhang), where the two arms are pulled apart by prescribed vertical displacements
+// +Delta/2 and -Delta/2 on the whole end face of each arm (a rigid loading block that leaves the
+// arm ends free to rotate). The crack plane is y = 0, the sawn notch is 0 < x < a0, the arms are
+// -h < y < 0 and 0 < y < h. The crack-plane point at x = Length is held (u = 0) to remove the
+// rigid-body rotation and translation; it carries no load under symmetric opening.
+#include "fiberbridge/law/rcurve.h"
+#include "fiberbridge/law/specimen.h"
+#include "fiberbridge/law/traction_law.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace dealii {
+class ParameterHandler;
+}
+
+namespace fiberbridge::fem {
+
+/// The "FEM" section of a scene (step-44 pattern; the caller enters the subsection).
+/// Plane stress/strain comes from the Material section.
+struct FemParameters {
+  /// Along the crack plane = tip advance per release [m]. On the seed DCB with the PVA control
+  /// law, 2 mm gives G_ss and R_J within 0.1 % of the law's values.
+  double element_size = 2.0e-3;
+  double grading = 1.3;        ///< growth ratio of element heights away from the crack plane
+  unsigned int min_layers = 4; ///< element height capped at arm thickness / min_layers
+  unsigned int degree = 1;     ///< polynomial degree of the FE_Q displacement elements
+  /// Sub-intervals of the composite Lobatto rule on each crack-plane element (1: nodal rule).
+  unsigned int interface_subintervals = 4;
+  double max_opening_increment = 0.5e-3; ///< load-point opening per nonlinear solve [m]
+  double tip_tolerance = 1e-3;           ///< |J_tip/J_tip,c - 1| accepted at an advance
+  double newton_tolerance = 1e-9;        ///< residual relative to the load-line reaction
+  unsigned int max_newton_iterations = 25;
+  double contact_stiffness_factor = 10;   ///< contact penalty = factor * E_T / element size
+  double rigid_law_stiffness_factor = 10; ///< elastic rise of rigid laws = factor * E_T / size
+  unsigned int tip_domain_elements = 4;   ///< half-width of the tip J domain in elements
+  double steady_state_window = 10e-3;     ///< crack growth over which the plateau is judged [m]
+  double plateau_tolerance = 0.01;        ///< relative spread of R_J accepted as a plateau
+  unsigned int output_every = 0;          ///< VTU every N advances (0: only the final state)
+  /// Out-of-plane (radial) constants for plane strain (USDA Wood Handbook, Douglas-fir:
+  /// E_R/E_L = 0.068, nu_LR = 0.292, nu_RT = 0.390).
+  double E_R_over_E_L = 0.068;
+  double nu_LR = 0.292;
+  double nu_RT = 0.390;
+
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+  /// Throws InputError naming the FEM/<key> that is out of range.
+  void validate() const;
+};
+
+/// What a run measured beyond the R curve, for verification (one entry per RCurvePoint).
+struct FemRunDetails {
+  std::vector<double> zone_dissipated; ///< damage dissipation of the zone, exact from history [J]
+  std::vector<double> zone_integral;   ///< int sigma d(delta) along the zone (Eq. 1 term) [J/m^2]
+  /// Energy released at the tip so far: sum over releases of the drop of bulk + zone recoverable
+  /// + zone damage energy at fixed opening [J]. W_ext = U + U_zone + D_zone + this (closure).
+  std::vector<double> tip_dissipated;
+  /// Tip J right after the release that preceded this record (NaN for the first) [J/m^2]: the
+  /// tip energy release rate falls from J_tip to this value while a release happens.
+  std::vector<double> j_after_release;
+  unsigned unstable_advances = 0; ///< advances at fixed load-point opening
+  double simulated_law_area = 0;  ///< area of the law simulated (after regularization)
+};
+
+/// Runs the DCB under load-point opening control from the initial crack until steady state (the
+/// notch root has moved and R_J has a plateau over `steady_state_window`) or until the ligament
+/// runs out. One RCurvePoint per accepted tip advance (the critical state just before the tip
+/// node is released). `output_dir` empty: no files. `progress` gets one line per few advances.
+/// Throws ComputationError with a diagnosis when equilibrium cannot be found.
+law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
+                                   const law::TractionLaw& law, double j_tip,
+                                   const FemParameters& parameters,
+                                   const std::string& output_dir = "",
+                                   const std::function<void(const std::string&)>& progress = {});
+
+/// The same, also filling `details`.
+law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
+                                   const law::TractionLaw& law, double j_tip,
+                                   const FemParameters& parameters, const std::string& output_dir,
+                                   const std::function<void(const std::string&)>& progress,
+                                   FemRunDetails& details);
+
+} // namespace fiberbridge::fem

@@ -1,0 +1,103 @@
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
+#include "fiberbridge/fem/dcb_simulation.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace fiberbridge::fem {
+
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+
+void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
+  prm.declare_entry("Element size", "2.0", Double(0),
+                    "Element length along the crack plane [mm]; also the tip advance per "
+                    "release. Uniform over the whole beam length.");
+  prm.declare_entry("Grading", "1.3", Double(1),
+                    "Growth ratio of element heights from the crack plane (where elements are "
+                    "square) towards the beam faces.");
+  prm.declare_entry("Minimum layers per arm", "4", Integer(1),
+                    "Element heights are capped at arm thickness / this number.");
+  prm.declare_entry("Polynomial degree", "1", Integer(1, 2), "Degree of the FE_Q elements.");
+  prm.declare_entry("Interface sub-intervals", "4", Integer(1, 64),
+                    "Sub-intervals of the composite Gauss-Lobatto rule on each crack-plane "
+                    "element (1: the element nodes only). Resolves the law next to the tip, where "
+                    "the opening rises from zero within one element.");
+  prm.declare_entry("Maximum opening increment", "0.5", Double(0),
+                    "Largest change of the load-point opening in one nonlinear solve [mm]; "
+                    "larger changes are reached in sub-steps.");
+  prm.declare_entry("Tip toughness tolerance", "0.001", Double(0, 0.1),
+                    "Relative deviation of the tip J from J tip accepted when the tip advances.");
+  prm.declare_entry("Newton tolerance", "1e-9", Double(0, 1e-3),
+                    "Residual norm relative to the load-line reaction norm.");
+  prm.declare_entry("Maximum Newton iterations", "25", Integer(1));
+  prm.declare_entry("Contact stiffness factor", "10", Double(0),
+                    "Frictionless contact penalty on closed crack faces = factor * E_T / element "
+                    "size [Pa/m].");
+  prm.declare_entry("Rigid law stiffness factor", "10", Double(0),
+                    "Laws with sigma(0) > 0 (linear, exponential) get an elastic rise of slope "
+                    "factor * E_T / element size; the area change is reported in the notes.");
+  prm.declare_entry("Tip J domain half-width", "4", Integer(1),
+                    "Half-width of the full-height strip around the tip used for the tip J "
+                    "domain integral, in elements.");
+  prm.declare_entry("Steady-state window", "10", Double(0),
+                    "Crack growth after the notch root first moves over which the R plateau is "
+                    "judged [mm].");
+  prm.declare_entry("Plateau tolerance", "0.01", Double(0, 1),
+                    "Relative spread of R_J over the window accepted as steady state.");
+  prm.declare_entry("Output every", "0", Integer(0),
+                    "Write VTU every N tip advances (0: only the final state).");
+  prm.declare_entry("E_R over E_L", "0.068", Double(0),
+                    "Out-of-plane (radial) modulus ratio, plane strain only (Wood Handbook, "
+                    "Douglas-fir).");
+  prm.declare_entry("nu_LR", "0.292", Double(0, 0.5), "Plane strain only.");
+  prm.declare_entry("nu_RT", "0.390", Double(0, 1), "Plane strain only.");
+}
+
+void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
+  element_size = prm.get_double("Element size") * units::mm;
+  grading = prm.get_double("Grading");
+  min_layers = prm.get_integer("Minimum layers per arm");
+  degree = prm.get_integer("Polynomial degree");
+  interface_subintervals = prm.get_integer("Interface sub-intervals");
+  max_opening_increment = prm.get_double("Maximum opening increment") * units::mm;
+  tip_tolerance = prm.get_double("Tip toughness tolerance");
+  newton_tolerance = prm.get_double("Newton tolerance");
+  max_newton_iterations = prm.get_integer("Maximum Newton iterations");
+  contact_stiffness_factor = prm.get_double("Contact stiffness factor");
+  rigid_law_stiffness_factor = prm.get_double("Rigid law stiffness factor");
+  tip_domain_elements = prm.get_integer("Tip J domain half-width");
+  steady_state_window = prm.get_double("Steady-state window") * units::mm;
+  plateau_tolerance = prm.get_double("Plateau tolerance");
+  output_every = prm.get_integer("Output every");
+  E_R_over_E_L = prm.get_double("E_R over E_L");
+  nu_LR = prm.get_double("nu_LR");
+  nu_RT = prm.get_double("nu_RT");
+  validate();
+}
+
+void FemParameters::validate() const {
+  auto require = [](bool ok, const char* key, const char* what) {
+    if (!ok)
+      throw InputError(std::string("FEM/") + key + ": " + what);
+  };
+  require(element_size > 0, "Element size", "must be positive (mm)");
+  require(grading >= 1, "Grading", "must be >= 1");
+  require(min_layers >= 1, "Minimum layers per arm", "must be >= 1");
+  require(degree == 1 || degree == 2, "Polynomial degree", "must be 1 or 2");
+  require(interface_subintervals >= 1, "Interface sub-intervals", "must be >= 1");
+  require(max_opening_increment > 0, "Maximum opening increment", "must be positive (mm)");
+  require(tip_tolerance > 0 && tip_tolerance < 0.1, "Tip toughness tolerance",
+          "must lie in (0, 0.1)");
+  require(newton_tolerance > 0 && newton_tolerance < 1e-3, "Newton tolerance",
+          "must lie in (0, 1e-3)");
+  require(max_newton_iterations >= 1, "Maximum Newton iterations", "must be >= 1");
+  require(contact_stiffness_factor > 0, "Contact stiffness factor", "must be positive");
+  require(rigid_law_stiffness_factor > 0, "Rigid law stiffness factor", "must be positive");
+  require(tip_domain_elements >= 1, "Tip J domain half-width", "must be >= 1 element");
+  require(steady_state_window > 0, "Steady-state window", "must be positive (mm)");
+  require(plateau_tolerance > 0, "Plateau tolerance", "must be positive");
+  require(E_R_over_E_L > 0, "E_R over E_L", "must be positive");
+}
+
+} // namespace fiberbridge::fem

@@ -1,0 +1,420 @@
+// Verification of the deal.II DCB model (DESIGN.md section 3). Coarse meshes on a short specimen
+// so that each test takes a few seconds in Release; every tolerance says where it comes from.
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
+#include "fiberbridge/fem/cohesive_interface.h"
+#include "fiberbridge/fem/dcb_simulation.h"
+#include "fiberbridge/law/exponential_law.h"
+#include "fiberbridge/law/piecewise_linear_law.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+using namespace fiberbridge;
+using units::kPa;
+using units::mm;
+
+namespace {
+
+law::PiecewiseLinearLaw pva_control() {
+  law::TrilinearParameters t;
+  t.d1 = 0.1 * mm;
+  t.s1 = 661 * kPa;
+  t.d2 = 1.0 * mm;
+  t.s2 = 187 * kPa;
+  t.dc = 6 * mm;
+  return law::make_trilinear(t);
+}
+
+/// A short DCB (120 x 20 x 20 mm, a0 40 mm) that the tests run in about a second.
+law::Specimen short_dcb() {
+  law::Specimen s;
+  s.length = 0.120;
+  s.width = 0.020;
+  s.height = 0.020;
+  s.initial_crack = 0.040;
+  return s;
+}
+
+void print(const law::SimulationResult& r) {
+  std::cout << "  a_mm root_mm delta_root_mm load_N J_tip J_ff R_J R_eq2 R_energy\n";
+  for (const auto& p : r.rcurve)
+    std::cout << "  " << p.a / mm << " " << p.root / mm << " " << p.delta_root / mm << " " << p.load
+              << " " << p.J_tip << " " << p.J_ff << " " << p.R_J << " " << p.R_eq2 << " "
+              << p.R_energy << "\n";
+  for (const auto& n : r.notes)
+    std::cout << "  note: " << n << "\n";
+}
+
+} // namespace
+
+// (1) The law through the interface integration: one segment loaded, unloaded (with a contact
+// excursion) and reloaded through the whole law dissipates exactly the law's area.
+TEST(CohesiveInterface, LoadUnloadReloadDissipatesTheLawArea) {
+  const auto law = pva_control();
+  fem::CohesiveInterface iface(law, 1e12);
+  const unsigned p0 = iface.add_point(0.0), p1 = iface.add_point(2 * mm);
+  const unsigned s = iface.add_segment({p0, p1}, {1 * mm, 1 * mm}); // trapezoidal (Q1 Lobatto)
+  iface.open_segment(s, fem::SegmentState::cohesive);
+
+  // Opening path (uniform over the segment). Every kink of the response is a path vertex (law
+  // kinks 0.1, 1, 6 mm; re-joining the envelope at the previous maximum 0.5 and 3 mm), so the
+  // trapezoidal work sum below is exact for the piecewise-linear response.
+  const std::vector<double> path_mm{0,   0.1, 0, -0.01, 0,   0.5, 0.2, 0.5,
+                                    1.0, 3.0, 0, 1.0,   3.0, 6.0, 6.5, 0};
+  double work = 0; // per unit thickness [J/m]
+  double opening = 0;
+  double force = 0;
+  double dissipated_after_first_unload = -1;
+  for (std::size_t k = 1; k < path_mm.size(); ++k) {
+    const double from = path_mm[k - 1] * mm, to = path_mm[k] * mm;
+    const int n = 50;
+    for (int i = 1; i <= n; ++i) {
+      const double next = from + (to - from) * i / n;
+      const double f_next = iface.respond(p0, next).force + iface.respond(p1, next).force;
+      work += 0.5 * (force + f_next) * (next - opening);
+      opening = next;
+      force = f_next;
+      iface.commit({next, next});
+    }
+    if (k == 2) { // loaded to d1 and back to zero: damage so far, exact from the history
+      dissipated_after_first_unload = iface.dissipated_energy();
+      EXPECT_NEAR(work, dissipated_after_first_unload, 1e-12 * law.area() * 2 * mm);
+    }
+  }
+  const double length = 2 * mm;
+  // Round-off only: the response is linear between the path vertices.
+  EXPECT_NEAR(work, law.area() * length, 1e-9 * law.area() * length);
+  EXPECT_NEAR(iface.dissipated_energy(), law.area() * length, 1e-12 * law.area() * length);
+  EXPECT_TRUE(iface.has_failed(p0) && iface.has_failed(p1));
+  EXPECT_EQ(iface.respond(p0, 1 * mm).force, 0.0);     // failed: traction-free in opening
+  EXPECT_LT(iface.respond(p0, -1e-3 * mm).force, 0.0); // but contact still acts
+  // Loading to d1 and back dissipates nothing: it stays on the elastic rise.
+  EXPECT_NEAR(dissipated_after_first_unload, 0.0, 1e-12 * law.area() * length);
+}
+
+// Dynamic insertion means fresh history: a damaged point cannot seed a new cohesive segment.
+TEST(CohesiveInterface, InsertionIsFresh) {
+  const auto law = pva_control();
+  fem::CohesiveInterface iface(law, 1e12);
+  iface.add_point(0);
+  iface.add_point(1 * mm);
+  iface.add_point(2 * mm);
+  const unsigned a = iface.add_segment({0, 1}, {0.5 * mm, 0.5 * mm});
+  const unsigned b = iface.add_segment({1, 2}, {0.5 * mm, 0.5 * mm});
+  iface.open_segment(a, fem::SegmentState::cohesive);
+  iface.commit({0.3 * mm, 0.2 * mm, 0.0});
+  EXPECT_THROW(iface.open_segment(b, fem::SegmentState::cohesive), ComputationError);
+  EXPECT_THROW(iface.open_segment(a, fem::SegmentState::cohesive), ComputationError);
+}
+
+// (2) LEFM limit: load during propagation against corrected beam theory, R = J_tip.
+TEST(FemDcb, LefmFollowsCorrectedBeamTheory) {
+  const auto spec = short_dcb();
+  const law::Material wood;
+  const double j_tip = 200;
+  fem::FemParameters prm;
+  prm.element_size = 1 * mm;
+  prm.steady_state_window = 8 * mm;
+  const auto r = fem::simulate_dcb(spec, wood, law::NoBridgingLaw(), j_tip, prm);
+  print(r);
+  ASSERT_GE(r.rcurve.size(), 8u);
+  EXPECT_TRUE(r.reached_steady_state);
+  const double chi_h = law::cbt_chi(wood) * spec.arm_thickness();
+  for (const auto& p : r.rcurve) {
+    // CBT is itself an approximation of 2D orthotropic elasticity, good to about 2 % for fine
+    // meshes (notes/verification.md); on this mesh the difference measured 0.6 %. 1.5 % fails
+    // for a wrong stiffness, a wrong tip criterion (P ~ sqrt(J)) or a wrong load line.
+    EXPECT_NEAR(p.load / law::cbt_load_at_crack_length(spec, wood, j_tip, p.a), 1.0, 0.015)
+        << "a = " << p.a / mm << " mm";
+    // Tip J is the criterion (within its tolerance); the far-field J measures the same
+    // energy release rate on another domain: path independence, measured 0.07 %.
+    EXPECT_NEAR(p.J_tip / j_tip, 1.0, prm.tip_tolerance);
+    EXPECT_NEAR(p.R_J / j_tip, 1.0, 0.005);
+    EXPECT_DOUBLE_EQ(p.R_eq2, j_tip);
+    if (std::isfinite(p.R_energy)) {
+      // Each release happens at fixed opening, where G falls along the element as
+      // (a + chi h)^-4: the energy per discrete advance is J_tip (1 - 2 da/(a + chi h)) to
+      // first order. Check that, within a quarter of the effect.
+      const double da = 1 * mm;
+      const double expected = j_tip * (1 - 2 * da / (p.a - 0.5 * da + chi_h));
+      EXPECT_NEAR(p.R_energy, expected, 0.25 * (j_tip - expected)) << "a = " << p.a / mm;
+    }
+  }
+  EXPECT_NEAR(r.G_ss / j_tip, 1.0, 0.005);
+}
+
+// Quadratic elements: the same LEFM check on 2 mm Q2 elements (interface integrated with the
+// composite 3-point Lobatto rule, the mid-side node released with its segment).
+TEST(FemDcb, LefmQuadraticElements) {
+  const auto spec = short_dcb();
+  const law::Material wood;
+  fem::FemParameters prm;
+  prm.degree = 2;
+  prm.element_size = 2 * mm;
+  prm.tip_domain_elements = 2;
+  prm.steady_state_window = 8 * mm;
+  const auto r = fem::simulate_dcb(spec, wood, law::NoBridgingLaw(), 200, prm);
+  print(r);
+  ASSERT_GE(r.rcurve.size(), 4u);
+  for (const auto& p : r.rcurve) {
+    // Same CBT budget as for Q1 (measured here: within 1 %).
+    EXPECT_NEAR(p.load / law::cbt_load_at_crack_length(spec, wood, 200, p.a), 1.0, 0.015);
+    EXPECT_NEAR(p.R_J / 200, 1.0, 0.005);
+  }
+}
+
+namespace {
+/// One linear-softening run shared by the tests below (about a second).
+struct LinearSofteningRun {
+  law::Specimen spec = short_dcb();
+  law::Material wood;
+  double j_tip = 200;
+  // sigma_c 1 MPa, delta_c 0.4 mm: area 200 J/m^2, a zone of ~15 elements that fits in the
+  // short specimen. Rigid at zero opening: regularized here with an elastic rise to 10 % of
+  // delta_c (area -10 %), so that the test compares against the exact Eq. 2 of the law that is
+  // simulated. The rise is chosen so that the first node behind the tip (opening ~0.03 mm)
+  // stays on it, so the tip element is integrated exactly. (Stiffer rises: see
+  // RigidLawIsRegularizedAndDiagnosed.)
+  law::PiecewiseLinearLaw law =
+      law::make_linear_softening(1000 * kPa, 0.4 * mm).with_elastic_rise(0.04 * mm);
+  fem::FemParameters prm;
+  fem::FemRunDetails details;
+  law::SimulationResult result;
+  LinearSofteningRun() {
+    prm.element_size = 1 * mm;
+    prm.steady_state_window = 8 * mm;
+    result = fem::simulate_dcb(spec, wood, law, j_tip, prm,
+                               std::getenv("FEMOUT") ? std::getenv("FEMOUT") : "", {}, details);
+  }
+};
+const LinearSofteningRun& linear_softening() {
+  static const LinearSofteningRun run;
+  return run;
+}
+} // namespace
+
+// (3) Linear softening: R_J follows Eq. 2 (= J_tip + s_c delta_root / 2 up to the elastic rise)
+// while the zone develops, and plateaus at J_tip + area.
+TEST(FemDcb, LinearSofteningFollowsEq2AndPlateaus) {
+  const auto& run = linear_softening();
+  const auto& r = run.result;
+  print(r);
+  ASSERT_TRUE(r.reached_steady_state);
+  const double G_ss = run.j_tip + run.law.area();
+  int developing = 0;
+  for (const auto& p : r.rcurve) {
+    // Analytic linear softening (no rise) differs from the simulated law's Eq. 2 by at most
+    // s_c delta_e / 2 = 20 J/m^2 (the area cut off by the rise).
+    const double analytic = run.j_tip + 0.5 * 1000 * kPa * std::min(p.delta_root, 0.4 * mm);
+    EXPECT_NEAR(p.R_eq2, analytic, 0.5 * 1000 * kPa * 0.04 * mm + 1e-9);
+    // R_J is measured (far-field J minus delta sigma / 2); 0.5 % of G_ss covers the path
+    // dependence of the FE J (0.07 % in the LEFM limit) and the integration of the tractions
+    // over the zone (measured: within 0.05 %).
+    EXPECT_NEAR(p.R_J, p.R_eq2, 0.005 * G_ss) << "a = " << p.a / mm << " mm";
+    if (p.root <= run.spec.initial_crack + 1e-9)
+      ++developing;
+  }
+  EXPECT_GE(developing, 10); // the development is resolved by enough advances to mean something
+  // Plateau: mean R_J over the steady window against J_tip + area (same 0.5 % budget).
+  EXPECT_NEAR(r.G_ss / G_ss, 1.0, 0.005);
+}
+
+// (4) Tip J at each advance is J_tip, and Eq. 1 holds on the FE fields: J_ff = J_tip + the
+// integral of sigma d(delta) along the zone (path independence with cohesive crack faces).
+TEST(FemDcb, TipJAndEq1) {
+  const auto& run = linear_softening();
+  const auto& r = run.result;
+  ASSERT_EQ(run.details.zone_integral.size(), r.rcurve.size());
+  for (std::size_t i = 0; i < r.rcurve.size(); ++i) {
+    const auto& p = r.rcurve[i];
+    // Advances at fixed opening (unstable) may exceed J_tip; all others are at J_tip within
+    // the secant tolerance.
+    EXPECT_GE(p.J_tip, (1 - run.prm.tip_tolerance) * run.j_tip);
+    if (run.details.unstable_advances == 0) {
+      EXPECT_LE(p.J_tip, (1 + run.prm.tip_tolerance) * run.j_tip);
+    }
+    // Path independence: two domains, one through the arms around the whole zone, one a strip
+    // around the tip with the crack-face term: 0.5 % of J_ff.
+    EXPECT_NEAR(p.J_ff, p.J_tip + run.details.zone_integral[i], 0.005 * p.J_ff);
+    // Before the root moves the zone holds every opening from 0 to delta_root once:
+    // the zone integral is the law's integral up to delta_root (Eq. 1), within 0.5 % of G_ss.
+    if (p.root <= run.spec.initial_crack + 1e-9) {
+      EXPECT_NEAR(run.details.zone_integral[i], run.law.envelope_integral(p.delta_root),
+                  0.005 * (run.j_tip + run.law.area()));
+    }
+  }
+}
+
+// Energy balance: external work = bulk strain energy + zone recoverable + zone damage + tip.
+TEST(FemDcb, EnergyBalanceCloses) {
+  const auto& run = linear_softening();
+  const auto& r = run.result;
+  const double B = run.spec.width, da = 1 * mm;
+  double lower = 0; // sum over releases of J right after the release times B da
+  for (std::size_t i = 0; i < r.rcurve.size(); ++i) {
+    const auto& p = r.rcurve[i];
+    EXPECT_NEAR(p.dissipated, p.external_work - p.strain_energy - p.zone_recoverable,
+                1e-9 * p.external_work);
+    // Closure: the work of the load-line force (trapezoid over the equilibrium states of each
+    // loading phase) against the energy stored and dissipated. The difference is the
+    // quadrature error of the work over the nonlinear loading phases.
+    const double closure = p.external_work - p.strain_energy - p.zone_recoverable -
+                           run.details.zone_dissipated[i] - run.details.tip_dissipated[i];
+    EXPECT_LT(std::abs(closure), 2e-3 * p.external_work) << "a = " << p.a / mm;
+    // The tip dissipates what the releases free: at most J_tip per unit area, at least the tip J
+    // left right after each release (G falls from J_tip to that while the node lets go).
+    if (i > 0)
+      lower += run.details.j_after_release[i] * B * da;
+    const double upper =
+        (1 + run.prm.tip_tolerance) * run.j_tip * B * (p.a - run.spec.initial_crack);
+    EXPECT_LE(run.details.tip_dissipated[i], upper + 1e-12) << "a = " << p.a / mm;
+    EXPECT_GE(run.details.tip_dissipated[i], lower - 1e-12) << "a = " << p.a / mm;
+  }
+  std::cout << "  tip dissipation / (J_tip B growth) at the end: "
+            << run.details.tip_dissipated.back() /
+                   (run.j_tip * B * (r.rcurve.back().a - run.spec.initial_crack))
+            << "\n";
+}
+
+// The measurement of the report (not part of ctest; run with
+// fem_tests --gtest_also_run_disabled_tests --gtest_filter=*SeedPva*): the PVA control trilinear
+// law on the seed specimen with Douglas-fir.
+TEST(FemDcb, DISABLED_SeedPvaControl) {
+  fem::FemParameters prm;
+  if (const char* e = std::getenv("FB_FEM_ELEMENT_MM"))
+    prm.element_size = std::atof(e) * mm;
+  if (const char* e = std::getenv("FB_FEM_DEGREE"))
+    prm.degree = unsigned(std::atoi(e));
+  const auto law = pva_control();
+  fem::FemRunDetails details;
+  const char* out = std::getenv("FB_FEM_OUT");
+  const auto r = fem::simulate_dcb(
+      law::Specimen(), law::Material(), law, 200, prm, out ? out : "",
+      [](const std::string& s) { std::cout << s << std::endl; }, details);
+  print(r);
+  const double G = 200 + law.area();
+  std::cout << "G_ss " << r.G_ss << " vs " << G << " rel error " << (r.G_ss - G) / G
+            << "\nR_J vs Eq. 2 (rows before the root moves): "
+            << law::rdelta_error_vs_eq2(r, law, 200) << "\nn_dofs " << r.n_dofs_or_particles
+            << " wall " << r.wall_time_s << " s\n";
+}
+
+// Outputs: VTU series with its PVD record and the interface CSV; a PVA zone that cannot develop
+// in the short specimen ends with the ligament and says so instead of returning a plateau.
+TEST(FemDcb, OutputsAndLigamentDiagnosis) {
+  const auto dir = std::filesystem::temp_directory_path() / "fiberbridge_fem_test_output";
+  std::filesystem::remove_all(dir);
+  law::Specimen spec = short_dcb();
+  spec.length = 0.080; // 40 mm of ligament; the PVA zone needs well over 100 mm
+  fem::FemParameters prm;
+  prm.element_size = 2 * mm;
+  prm.output_every = 5;
+  const auto r = fem::simulate_dcb(spec, law::Material(), pva_control(), 200, prm, dir.string());
+  EXPECT_FALSE(r.reached_steady_state);
+  EXPECT_TRUE(std::isnan(r.G_ss));
+  bool diagnosed = false;
+  for (const auto& n : r.notes)
+    diagnosed = diagnosed || n.find("no steady state: zone longer than ligament") == 0;
+  EXPECT_TRUE(diagnosed);
+  EXPECT_TRUE(std::filesystem::exists(dir / "fem_dcb.pvd"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "fem_dcb-0005.vtu"));
+  std::ifstream csv(dir / "fem_interface.csv");
+  std::string line, header;
+  while (std::getline(csv, line) && line.rfind("#", 0) == 0) {
+  }
+  EXPECT_EQ(line, "x_mm,opening_mm,traction_kPa,delta_max_mm,state");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(FemParameters, RejectsBadValues) {
+  fem::FemParameters prm;
+  prm.degree = 3;
+  EXPECT_THROW(prm.validate(), InputError);
+  prm = fem::FemParameters();
+  prm.element_size = 0;
+  EXPECT_THROW(fem::simulate_dcb(short_dcb(), law::Material(), law::NoBridgingLaw(), 200, prm),
+               InputError);
+  prm = fem::FemParameters();
+  auto spec = short_dcb();
+  spec.initial_crack = 6 * mm; // three 2 mm elements: no room for the far-field J domain
+  EXPECT_THROW(fem::simulate_dcb(spec, law::Material(), law::NoBridgingLaw(), 200, prm),
+               InputError);
+  spec = short_dcb();
+  spec.length = 0.050; // 10 mm of ligament, the J domains ahead of the tip need 18 mm
+  EXPECT_THROW(fem::simulate_dcb(spec, law::Material(), law::NoBridgingLaw(), 200, prm),
+               InputError);
+}
+
+// A rigid law (linear softening as the user types it) is regularized by the model itself with a
+// stiff elastic rise. The tip element then holds openings from 0 to delta_1 (the first node
+// behind the tip) over which the traction drops from sigma_c: the composite rule with m
+// sub-intervals misses at most sigma_c delta_1 / (2 m) of Eq. 1, and the run says so.
+TEST(FemDcb, RigidLawIsRegularizedAndDiagnosed) {
+  const auto spec = short_dcb();
+  fem::FemParameters prm;
+  prm.element_size = 1 * mm;
+  prm.steady_state_window = 8 * mm;
+  const auto law = law::make_linear_softening(1000 * kPa, 0.4 * mm);
+  const auto r = fem::simulate_dcb(spec, law::Material(), law, 200, prm);
+  ASSERT_TRUE(r.reached_steady_state);
+  bool regularized = false, diagnosed = false;
+  for (const auto& n : r.notes) {
+    regularized = regularized || n.find("rigid linear law regularized") == 0;
+    diagnosed = diagnosed || n.find("resolution: the opening one element behind the tip") == 0;
+  }
+  EXPECT_TRUE(regularized);
+  EXPECT_TRUE(diagnosed);
+  // delta_1 measured 0.035 mm here: bound 1e6 * 0.035e-3 / 8 = 4.4 J/m^2 (1.1 %), plus the
+  // 0.5 % budget of the regularized linear-softening test.
+  const double G_ss = 200 + law.area();
+  EXPECT_NEAR(r.G_ss / G_ss, 1.0, 0.011 + 0.005);
+}
+
+// Plane strain: with the out-of-plane Poisson ratios set to zero the reduced compliance is the
+// plane-stress one, so the runs must agree to round-off; with the Douglas-fir values the
+// constrained section is stiffer and carries more load at the same J_tip (CBT: P ~ sqrt(E),
+// E_L / (1 - nu_LR^2 E_R / E_L) is 0.58 % stiffer, so about +0.3 %).
+TEST(FemDcb, PlaneStrainReducesToPlaneStressWithoutPoissonCoupling) {
+  const auto spec = short_dcb();
+  fem::FemParameters prm;
+  prm.steady_state_window = 4 * mm;
+  law::Material stress;
+  law::Material strain = stress;
+  strain.plane_stress = false;
+  const auto r_stress = fem::simulate_dcb(spec, stress, law::NoBridgingLaw(), 200, prm);
+  fem::FemParameters uncoupled = prm;
+  uncoupled.nu_LR = 0;
+  uncoupled.nu_RT = 0;
+  const auto r_uncoupled = fem::simulate_dcb(spec, strain, law::NoBridgingLaw(), 200, uncoupled);
+  const auto r_strain = fem::simulate_dcb(spec, strain, law::NoBridgingLaw(), 200, prm);
+  ASSERT_EQ(r_stress.rcurve.size(), r_uncoupled.rcurve.size());
+  ASSERT_EQ(r_stress.rcurve.size(), r_strain.rcurve.size());
+  for (std::size_t i = 0; i < r_stress.rcurve.size(); ++i) {
+    EXPECT_NEAR(r_uncoupled.rcurve[i].load / r_stress.rcurve[i].load, 1.0, 1e-9);
+    const double ratio = r_strain.rcurve[i].load / r_stress.rcurve[i].load;
+    EXPECT_GT(ratio, 1.0005);
+    EXPECT_LT(ratio, 1.01);
+  }
+}
+
+// A Newton failure ends the run with a diagnosis (never a silently wrong curve): one Newton
+// iteration per solve cannot follow the trilinear law's branch changes.
+TEST(FemDcb, NewtonFailureIsDiagnosed) {
+  fem::FemParameters prm;
+  prm.max_newton_iterations = 1;
+  try {
+    fem::simulate_dcb(short_dcb(), law::Material(), pva_control(), 200, prm);
+    FAIL() << "expected a ComputationError";
+  } catch (const ComputationError& e) {
+    const std::string what = e.what();
+    std::cout << "  diagnosis: " << what << "\n";
+    EXPECT_NE(what.find("FEM: no equilibrium at load-point opening"), std::string::npos) << what;
+    EXPECT_NE(what.find("Newton"), std::string::npos) << what;
+  }
+}
