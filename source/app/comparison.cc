@@ -58,23 +58,29 @@ std::vector<PairwiseDifference> compare_models(const law::SimulationResult& a,
                                                const law::SimulationResult& b) {
   std::vector<PairwiseDifference> out;
   const double a_end = std::min(end_of_development(a), end_of_development(b));
-  for (const std::string q : {"R_energy", "R_J", "R_eq2", "delta_root"}) {
-    // b's curve as a function of a (rows with increasing a, finite values).
+  // R(a) curves depend on the specimen model (where each model puts the effective crack tip);
+  // R_J(delta_root) does not (Eq. 2): it is the like-for-like comparison of the zone mechanics.
+  for (const std::string q : {"R_energy", "R_J", "R_eq2", "delta_root", "R_J(delta_root)"}) {
+    const bool vs_delta = q == "R_J(delta_root)";
+    const std::string y_field = vs_delta ? "R_J" : q;
+    const auto x_of = [&](const law::RCurvePoint& p) { return vs_delta ? p.delta_root : p.a; };
+    // b's curve as a function of x (rows with increasing x, finite values).
     std::vector<double> xb, yb;
     for (const auto& p : b.rcurve) {
-      const double v = field(p, q);
-      if (std::isfinite(p.a) && std::isfinite(v) && (xb.empty() || p.a > xb.back())) {
-        xb.push_back(p.a);
+      const double v = field(p, y_field);
+      if (std::isfinite(x_of(p)) && std::isfinite(v) && p.a <= a_end &&
+          (xb.empty() || x_of(p) > xb.back())) {
+        xb.push_back(x_of(p));
         yb.push_back(v);
       }
     }
     double num = 0, den = 0;
     int n = 0;
     for (const auto& p : a.rcurve) {
-      const double va = field(p, q);
-      if (!std::isfinite(p.a) || !std::isfinite(va) || p.a > a_end)
+      const double va = field(p, y_field);
+      if (!std::isfinite(x_of(p)) || !std::isfinite(va) || p.a > a_end)
         continue;
-      const double vb = interpolate(xb, yb, p.a);
+      const double vb = interpolate(xb, yb, x_of(p));
       if (!std::isfinite(vb))
         continue;
       num += (vb - va) * (vb - va);
