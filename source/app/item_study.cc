@@ -180,6 +180,11 @@ void declare_study_section(dealii::ParameterHandler& prm) {
                     "Comma-separated case names, or all: stiff_initial_slope, brittle_limit, "
                     "zone_longer_than_ligament, snap_back, extreme_orthotropy, tiny_delta_c, "
                     "huge_delta_c, near_zero_sigma2.");
+  prm.declare_entry("Target error", "0.01", dealii::Patterns::Double(0),
+                    "The cheapest ladder level whose R_J and G_ss errors are both below this is "
+                    "reported (beam, FEM).");
+  prm.declare_entry("MPM target error", "0.03", dealii::Patterns::Double(0),
+                    "The same for the MPM ladder.");
   prm.declare_entry("Plateau tolerance", "0.05", dealii::Patterns::Double(0),
                     "A converged run whose G_ss differs from J_tip + area by more than this "
                     "relative amount is reported 'suspect'.");
@@ -196,6 +201,8 @@ void run_study_item(SceneContext& ctx) {
   const auto stability_models = split(prm.get("Stability models"), ',');
   const std::string case_list = prm.get("Stability cases");
   const double plateau_tol = prm.get_double("Plateau tolerance");
+  const double target_error = prm.get_double("Target error");
+  const double mpm_target = prm.get_double("MPM target error");
   prm.leave_subsection();
   if (ladder_models.empty() && stability_models.empty())
     throw InputError("Study: neither 'Ladder models' nor 'Stability models' names a model");
@@ -237,8 +244,18 @@ void run_study_item(SceneContext& ctx) {
         keys.push_back({key, values});
       }
       const std::string csv = "study_" + model + ".csv";
-      CsvWriter mw(ctx.out(csv), {"wall_time_s", "rdelta_rel_error", "G_ss_rel_error"},
-                   {model + " ladder"});
+      CsvWriter mw(ctx.out(csv),
+                   {"wall_time_s", "rdelta_rel_error", "G_ss_rel_error", "peak_load_N",
+                    "observed_order_rdelta", "observed_order_G_ss", "observed_order_peak_load"},
+                   {model + " ladder; orders from successive levels, taking the ratio of the "
+                            "first varied key's values as the refinement factor"});
+      struct Level {
+        std::string setting;
+        double key_value;
+        law::SimulationResult r;
+        double g_err, peak;
+      };
+      std::vector<Level> run_levels;
       for (std::size_t l = 0; l < levels; ++l) {
         std::vector<std::string> sets;
         std::string setting;
@@ -248,21 +265,64 @@ void run_study_item(SceneContext& ctx) {
         }
         std::cerr << "study: " << model << " level " << l << " (" << setting << ")\n";
         ScopedOverrides o(prm, sets, "Study/" + section_of(model) + " ladder");
-        const auto r =
+        auto r =
             run_model(ctx, model, ctx.out("study/" + model + "_level" + std::to_string(l)), true);
+        double peak = 0;
+        for (const auto& p : r.rcurve)
+          if (std::isfinite(p.load))
+            peak = std::max(peak, p.load);
         const double g_err = std::abs(r.G_ss - G_law) / G_law;
-        w.row({model, std::to_string(l)},
-              {double(r.n_dofs_or_particles), r.wall_time_s, r.rdelta_rel_error_vs_eq2, g_err});
-        mw.row({r.wall_time_s, r.rdelta_rel_error_vs_eq2, g_err});
+        run_levels.push_back(
+            {setting, std::strtod(keys[0].second[l].c_str(), nullptr), std::move(r), g_err, peak});
+      }
+      // Observed orders: p = log(e_l / e_{l+1}) / log(refinement factor); the peak load has no
+      // exact value, so its order comes from three successive levels (constant factor assumed).
+      const auto factor = [&](std::size_t l) {
+        const double a = run_levels[l].key_value, b = run_levels[l + 1].key_value;
+        return a > 0 && b > 0 ? std::max(a / b, b / a) : law::not_available;
+      };
+      const auto order = [&](double e0, double e1, double f) {
+        return e0 > 0 && e1 > 0 && f > 1 ? std::log(e0 / e1) / std::log(f) : law::not_available;
+      };
+      const double target = model == "mpm" ? mpm_target : target_error;
+      int cheapest = -1;
+      for (std::size_t l = 0; l < run_levels.size(); ++l) {
+        const auto& L = run_levels[l];
+        double p_r = law::not_available, p_g = law::not_available, p_p = law::not_available;
+        if (l + 1 < run_levels.size()) {
+          const auto& N = run_levels[l + 1];
+          p_r = order(L.r.rdelta_rel_error_vs_eq2, N.r.rdelta_rel_error_vs_eq2, factor(l));
+          p_g = order(L.g_err, N.g_err, factor(l));
+          if (l + 2 < run_levels.size())
+            p_p = order(std::abs(L.peak - N.peak), std::abs(N.peak - run_levels[l + 2].peak),
+                        factor(l));
+        }
+        const double worst = std::max(L.r.rdelta_rel_error_vs_eq2, L.g_err);
+        if (worst <= target &&
+            (cheapest < 0 || L.r.wall_time_s < run_levels[cheapest].r.wall_time_s))
+          cheapest = static_cast<int>(l);
+        w.row({model, std::to_string(l)}, {double(L.r.n_dofs_or_particles), L.r.wall_time_s,
+                                           L.r.rdelta_rel_error_vs_eq2, L.g_err});
+        mw.row({L.r.wall_time_s, L.r.rdelta_rel_error_vs_eq2, L.g_err, L.peak, p_r, p_g, p_p});
         rows.push_back({{"model", model},
                         {"level", l},
-                        {"setting", setting},
-                        {"n_dofs_or_particles", r.n_dofs_or_particles},
-                        {"wall_time_s", json_number(r.wall_time_s)},
-                        {"rdelta_rel_error", json_number(r.rdelta_rel_error_vs_eq2)},
-                        {"G_ss_rel_error", json_number(g_err)},
-                        {"reached_steady_state", r.reached_steady_state}});
+                        {"setting", L.setting},
+                        {"n_dofs_or_particles", L.r.n_dofs_or_particles},
+                        {"wall_time_s", json_number(L.r.wall_time_s)},
+                        {"rdelta_rel_error", json_number(L.r.rdelta_rel_error_vs_eq2)},
+                        {"G_ss_rel_error", json_number(L.g_err)},
+                        {"peak_load_N", L.peak},
+                        {"observed_order_rdelta", json_number(p_r)},
+                        {"observed_order_G_ss", json_number(p_g)},
+                        {"observed_order_peak_load", json_number(p_p)},
+                        {"reached_steady_state", L.r.reached_steady_state}});
       }
+      block["cheapest"][model] = cheapest < 0
+                                     ? Json("no level reached " + std::to_string(target))
+                                     : Json({{"level", cheapest},
+                                             {"setting", run_levels[cheapest].setting},
+                                             {"target", target},
+                                             {"wall_time_s", run_levels[cheapest].r.wall_time_s}});
       mw.close();
       plot += std::string(first_plot ? "" : ", ") + "'" + csv +
               "' using 1:2 with linespoints lw 2 title '" + model + " R_J vs Eq. 2', '" + csv +
