@@ -8,6 +8,8 @@
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/law_spec.h"
 
+#include <deal.II/base/mpi.h>
+
 #include <boost/program_options.hpp>
 
 #include <cstdlib>
@@ -233,6 +235,7 @@ int cmd_synth(const std::vector<std::string>& args) {
 } // namespace
 
 int main(int argc, char** argv) {
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     std::cout << usage;

@@ -30,7 +30,15 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Relative deviation of the tip J from J tip accepted when the tip advances.");
   prm.declare_entry("Newton tolerance", "1e-9", Double(0, 1e-3),
                     "Residual norm relative to the load-line reaction norm.");
-  prm.declare_entry("Maximum Newton iterations", "25", Integer(1));
+  prm.declare_entry("Maximum Newton iterations", "25", Integer(1),
+                    "Nonlinear iterations per equilibrium solve (either nonlinear solver).");
+  prm.declare_entry("Linear solver", "klu", dealii::Patterns::Selection("klu|umfpack"),
+                    "Sparse direct solver of the Jacobian systems: klu (Trilinos Amesos KLU) or "
+                    "umfpack (UMFPACK through deal.II). Both give the same R curve to round-off.");
+  prm.declare_entry("Nonlinear solver", "newton", dealii::Patterns::Selection("newton|kinsol"),
+                    "newton: own Newton with backtracking line search; kinsol: SUNDIALS KINSOL "
+                    "with its line search. Same Jacobian, same tolerance; a KINSOL result is "
+                    "re-checked against the Newton tolerance and a failure is reported.");
   prm.declare_entry("Contact stiffness factor", "10", Double(0),
                     "Frictionless contact penalty on closed crack faces = factor * E_T / element "
                     "size [Pa/m].");
@@ -64,6 +72,10 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   tip_tolerance = prm.get_double("Tip toughness tolerance");
   newton_tolerance = prm.get_double("Newton tolerance");
   max_newton_iterations = prm.get_integer("Maximum Newton iterations");
+  // The patterns admit only these values.
+  linear_solver = prm.get("Linear solver") == "umfpack" ? LinearSolver::umfpack : LinearSolver::klu;
+  nonlinear_solver =
+      prm.get("Nonlinear solver") == "kinsol" ? NonlinearSolver::kinsol : NonlinearSolver::newton;
   contact_stiffness_factor = prm.get_double("Contact stiffness factor");
   rigid_law_stiffness_factor = prm.get_double("Rigid law stiffness factor");
   tip_domain_elements = prm.get_integer("Tip J domain half-width");
