@@ -284,29 +284,6 @@ TEST(FemDcb, EnergyBalanceCloses) {
             << "\n";
 }
 
-// The measurement of the report (not part of ctest; run with
-// fem_tests --gtest_also_run_disabled_tests --gtest_filter=*SeedPva*): the PVA control trilinear
-// law on the seed specimen with Douglas-fir.
-TEST(FemDcb, DISABLED_SeedPvaControl) {
-  fem::FemParameters prm;
-  if (const char* e = std::getenv("FB_FEM_ELEMENT_MM"))
-    prm.element_size = std::atof(e) * mm;
-  if (const char* e = std::getenv("FB_FEM_DEGREE"))
-    prm.degree = unsigned(std::atoi(e));
-  const auto law = pva_control();
-  fem::FemRunDetails details;
-  const char* out = std::getenv("FB_FEM_OUT");
-  const auto r = fem::simulate_dcb(
-      law::Specimen(), law::Material(), law, 200, prm, out ? out : "",
-      [](const std::string& s) { std::cout << s << std::endl; }, details);
-  print(r);
-  const double G = 200 + law.area();
-  std::cout << "G_ss " << r.G_ss << " vs " << G << " rel error " << (r.G_ss - G) / G
-            << "\nR_J vs Eq. 2 (rows before the root moves): "
-            << law::rdelta_error_vs_eq2(r, law, 200) << "\nn_dofs " << r.n_dofs_or_particles
-            << " wall " << r.wall_time_s << " s\n";
-}
-
 // Outputs: VTU series with its PVD record and the interface CSV; a PVA zone that cannot develop
 // in the short specimen ends with the ligament and says so instead of returning a plateau.
 TEST(FemDcb, OutputsAndLigamentDiagnosis) {
