@@ -1496,14 +1496,14 @@ law::SimulationResult DcbModel::run() {
   details_.unstable_advances = n_unstable_;
   details_.simulated_law_area = law_->area();
   result_.wall_time_s = seconds_since(start);
-  result_.notes.push_back(
+  result_.method.push_back(
       "tip criterion: domain J over a full-height strip of +-" +
       std::to_string(prm_.tip_domain_elements) +
       " elements (q = 1 on the inner half) with the "
       "cohesive crack-face term; "
       "J_ff: domain J with q = 1 over the whole zone (ramps in the free arms behind the notch "
       "and one arm thickness ahead of the tip)");
-  result_.notes.push_back(
+  result_.method.push_back(
       std::string("load line at x = 0 (left end, no overhang), ties by AffineConstraints, ") +
       direct_solver_.name() + " direct solver, " +
       (prm_.nonlinear_solver == FemParameters::NonlinearSolver::kinsol
@@ -1512,7 +1512,7 @@ law::SimulationResult DcbModel::run() {
   result_.notes.push_back(std::to_string(n_unstable_) +
                           " advances at fixed load-point opening (tip J above J_tip after a "
                           "release: unstable growth)");
-  result_.notes.push_back(
+  result_.method.push_back(
       "time " + fmt(result_.wall_time_s, 3) + " s: " + std::to_string(n_trials_) +
       " equilibrium solves to find the critical openings, " + std::to_string(n_newton_) +
       " Newton iterations, " + std::to_string(n_factorizations_) + " factorizations " +

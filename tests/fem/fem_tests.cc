@@ -420,7 +420,7 @@ TEST(FemDcb, KluAndUmfpackGiveTheSameRCurve) {
   }
   std::cout << "  largest relative R_J difference klu - umfpack: " << largest << "\n";
   auto mentions = [](const law::SimulationResult& res, const std::string& what) {
-    for (const auto& n : res.notes)
+    for (const auto& n : res.method)
       if (n.find(what) != std::string::npos)
         return true;
     return false;
@@ -451,10 +451,10 @@ TEST(FemDcb, KinsolAgreesWithNewton) {
   }
   EXPECT_NEAR(r.G_ss, n.G_ss, 1e-7 * n.G_ss);
   std::cout << "  largest relative R_J difference kinsol - newton: " << largest << "\n";
-  for (const auto& note : r.notes)
+  for (const auto& note : r.method)
     if (note.rfind("time ", 0) == 0)
       std::cout << "  kinsol: " << note << "\n";
-  for (const auto& note : n.notes)
+  for (const auto& note : n.method)
     if (note.rfind("time ", 0) == 0)
       std::cout << "  newton: " << note << "\n";
 }
