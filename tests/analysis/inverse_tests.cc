@@ -4,6 +4,7 @@
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
+#include "fiberbridge/law/seed_laws.h"
 
 #include <gtest/gtest.h>
 
@@ -19,7 +20,7 @@ using units::mm;
 namespace {
 
 law::TrilinearParameters pva_control() {
-  return {0.1 * mm, 661 * kPa, 1.0 * mm, 187 * kPa, 6.0 * mm};
+  return law::seed_control_law("PVA");
 }
 
 /// Eq. 2 of `law` with J_tip = 200 J/m^2 at m + 1 equally spaced openings over [0, delta_end].

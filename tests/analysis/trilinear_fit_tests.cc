@@ -7,6 +7,7 @@
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
+#include "fiberbridge/law/seed_laws.h"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +22,7 @@ using units::mm;
 namespace {
 
 law::TrilinearParameters pva_control() {
-  return {0.1 * mm, 661 * kPa, 1.0 * mm, 187 * kPa, 6.0 * mm};
+  return law::seed_control_law("PVA");
 }
 
 /// The law sampled at m + 1 openings over [0, end] that fall between its kinks.

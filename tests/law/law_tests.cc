@@ -4,6 +4,7 @@
 #include "fiberbridge/law/exponential_law.h"
 #include "fiberbridge/law/law_spec.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
+#include "fiberbridge/law/seed_laws.h"
 #include "fiberbridge/law/specimen.h"
 
 #include <gtest/gtest.h>
@@ -135,4 +136,11 @@ TEST(Specimen, CorrectedBeamTheoryChiIsotropic) {
   m.E_L = m.E_T = 10e9;
   m.G_LT = 10e9 / 2.6;
   EXPECT_NEAR(cbt_chi(m), 0.6635, 5e-4);
+}
+
+TEST(Law, SeedControlLawsMatchTable1) {
+  // J1 of the PVA control row printed as 321 J/m^2 (Table 1).
+  EXPECT_NEAR(seed_control_law("PVA").j1(), 321, 0.5);
+  EXPECT_DOUBLE_EQ(seed_control_law("EPI").dc, 3.5 * mm);
+  EXPECT_THROW(seed_control_law("MDF"), InputError);
 }
