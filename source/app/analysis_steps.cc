@@ -32,13 +32,6 @@ void remove_stale_summary(const std::string& out_dir) {
 
 namespace {
 
-double trapezoid_area(const std::vector<double>& x, const std::vector<double>& y) {
-  double a = 0;
-  for (std::size_t i = 1; i < x.size(); ++i)
-    a += 0.5 * (y[i] + y[i - 1]) * (x[i] - x[i - 1]);
-  return a;
-}
-
 void write_law_csv(const std::string& path, const std::vector<double>& delta,
                    const std::vector<double>& sigma, const std::string& what) {
   CsvWriter w(path, {"delta_mm", "sigma_kPa"}, {what});

@@ -1,0 +1,102 @@
+#pragma once
+// The DCB specimen in explicit MPM: two arms joined ahead of an explicit mid-plane crack, opened by
+// a slow prescribed velocity at the load line; the tip grows by a fixed step whenever its J
+// reaches J_tip and leaves a fresh bridging segment behind (DESIGN.md section 2, "MPM").
+#include "fiberbridge/law/rcurve.h"
+#include "fiberbridge/law/specimen.h"
+#include "fiberbridge/law/traction_law.h"
+#include "fiberbridge/mpm/crack.h"
+#include "fiberbridge/mpm/explicit_solver.h"
+#include "fiberbridge/mpm/orthotropic_elastic.h"
+#include "fiberbridge/mpm/parameters.h"
+#include "fiberbridge/mpm/vtu_writer.h"
+
+#include <deque>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fiberbridge::mpm {
+
+/// The specimen model: body, crack, loading block and tip criterion. run() is simulate_dcb;
+/// step() lets tests load the specimen without growth and read its fields.
+class DcbModel {
+public:
+  DcbModel(const law::Specimen& specimen, const law::Material& material,
+           const law::TractionLaw& law, double j_tip, const MpmParameters& params,
+           const std::string& output_dir = "",
+           const std::function<void(const std::string&)>& progress = {});
+
+  /// Load, step and grow until a stop condition; then the R curve and its summary.
+  law::SimulationResult run();
+  /// One time step of the loading; with `grow` the tip is checked (every few steps) and
+  /// advanced. False once a stop condition holds (reason in stop_reason()).
+  bool step(bool grow);
+
+  /// Load for the whole width [N] (moving average of the load-block reaction).
+  double load() const { return load_; }
+  /// Total opening of the load line [m].
+  double load_point_opening() const { return opening_; }
+  double tip_j() const;
+  /// Far-field J around the whole zone [J/m^2] (seed Eq. 1's left side); NaN when the strips do
+  /// not fit in the specimen.
+  double far_field_j() const;
+  /// First-mode period of an arm of length a0 and the opening rate the loading uses.
+  double vibration_period() const { return t_vib0_; }
+  double opening_rate() const { return rate_; }
+  const ExplicitSolver& solver() const;
+  const Crack& crack() const;
+  const std::string& stop_reason() const { return stop_reason_; }
+
+private:
+  void choose_law();
+  void setup_body();
+  void setup_loading();
+  double opening_rate(double t) const;
+  void advance_tip(double j_measured);
+  void finish(law::SimulationResult& r) const;
+
+  law::Specimen spec_;
+  law::Material mat_;
+  const law::TractionLaw& user_law_;
+  double j_tip_;
+  MpmParameters prm_;
+  std::string out_dir_;
+  std::function<void(const std::string&)> progress_;
+  OrthotropicElastic elastic_;
+
+  law::TractionLawPtr regularized_;       ///< the law with an elastic rise, if the user's is rigid
+  const law::TractionLaw* law_ = nullptr; ///< the law the crack segments use
+  std::unique_ptr<Crack> crack_;
+  std::unique_ptr<ExplicitSolver> solver_;
+  std::unique_ptr<ParticleVtuWriter> vtu_;
+  double cell_ = 0, step_ = 0, opening_allowance_ = 0, end_tip_ = 0;
+  double a0_ = 0; ///< initial tip: the node column nearest to the sawn crack's end [m]
+  double rate_ = 0, ramp_time_ = 0, t_vib0_ = 0;
+  int n_check_ = 1;                 ///< steps between tip J evaluations
+  std::size_t j_window_length_ = 1; ///< evaluations averaged by the growth criterion
+  std::deque<double> j_window_;
+  std::vector<std::string> notes_;
+  std::string stop_reason_;
+
+  double opening_ = 0, load_ = 0;
+  std::vector<law::RCurvePoint> rcurve_;
+  double max_kinetic_ratio_ = 0;
+};
+
+/// Runs the specimen until the ligament ends (or steady growth as set in `params`). One
+/// RCurvePoint per accepted tip advance. `output_dir` empty = no files (else particle VTU every
+/// params.vtu_every_advances advances, with a .pvd). `progress` receives one line per advance.
+/// Throws InputError for unusable parameters and ComputationError with a diagnosis when the
+/// run becomes unstable.
+law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
+                                   const law::TractionLaw& law, double j_tip,
+                                   const MpmParameters& params, const std::string& output_dir,
+                                   const std::function<void(const std::string&)>& progress = {});
+
+/// First-mode period of a cantilever arm of length a (Euler-Bernoulli, clamped-free):
+/// t_vib = 1.787 a^2 sqrt(rho B h / (E_L I)), I = B h^3/12, h the arm thickness [s].
+double arm_vibration_period(const law::Specimen& specimen, const law::Material& material, double a);
+
+} // namespace fiberbridge::mpm

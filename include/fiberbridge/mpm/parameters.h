@@ -1,0 +1,53 @@
+#pragma once
+// Parameters of the explicit MPM model of the DCB specimen (DESIGN.md section 2, "MPM").
+
+namespace fiberbridge::mpm {
+
+struct MpmParameters {
+  /// Edge of the square background-grid cells [m].
+  double cell_size = 2.5e-3;
+  /// Particles per cell along each axis (2 gives 4 particles per cell).
+  int particles_per_cell = 2;
+  /// Time step as a fraction of the time a dilatational wave needs to cross one cell.
+  double cfl = 0.5;
+  /// PIC damping beta: v_p <- (1 - beta) v_FLIP + beta v_PIC. A tip advance of a whole cell
+  /// releases its energy at once; with 0.1 the arms still rang at the next growth checks, the tip
+  /// grew on the peaks of the ringing and the released energy per area came out 10 % low (LEFM
+  /// verification run); 0.5 removes it within the J window (measured: R_energy at the value a
+  /// one-cell step releases quasi-statically).
+  double pic_fraction = 0.5;
+  /// Quasi-static loading: the load line reaches the LEFM initiation opening of corrected beam
+  /// theory after this many first-mode vibration periods of an arm of length a0.
+  double loading_periods = 8;
+  /// The opening rate rises smoothly from zero over this many vibration periods (no shock).
+  double ramp_periods = 2;
+  /// Tip growth step in whole cells: the tip moves from node column to node column, because the
+  /// velocity fields split per node (Crack::splits); a step shorter than a cell would change
+  /// nothing the grid sees. The released segment gets crack particles every half cell.
+  int growth_step_cells = 1;
+  /// The growth criterion compares the tip J averaged over this many arm periods (of length a0)
+  /// with J_tip; the window restarts at each advance, so the tip grows at most one step per
+  /// window. 0.5 averages the ringing an advance excites and still lets the tip keep up with the
+  /// loading (LEFM needs about a0/16 of growth per a0 period at the default loading rate, less
+  /// at longer cracks); a whole period made the tip lag (J 10 % above J_tip at growth).
+  double j_window_periods = 0.5;
+  /// The tip J domain: q = 1 within this many cells of the tip, falling to 0 two cells farther.
+  double tip_j_cells = 2;
+  /// Rigid laws (sigma(0) > 0) get an elastic rise to sigma(delta_e) with
+  /// delta_e = this fraction of delta_c; R then drops by sigma(0) delta_e / 2.
+  double rigid_law_rise_fraction = 0.005;
+  /// Stop once the uncracked ligament is shorter than this [m]; 0 selects the specimen height
+  /// (a shorter ligament no longer behaves like a DCB and its J is no longer Eq. 1's).
+  double end_ligament = 0;
+  /// Stop after the notch root has moved this far (m) in steady state; 0 = run to the end.
+  double steady_growth = 0;
+  /// Safety bound on the number of time steps.
+  long max_steps = 20'000'000;
+  /// Write a particle VTU every this many tip advances (0 = none).
+  int vtu_every_advances = 20;
+
+  /// Throws InputError naming the "MPM/<entry>" that is out of range.
+  void validate() const;
+};
+
+} // namespace fiberbridge::mpm

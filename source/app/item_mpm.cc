@@ -1,0 +1,96 @@
+// Scene item "mpm": the explicit MPM model of the DCB (DESIGN.md section 2), section "MPM".
+#include "fiberbridge/app/items.h"
+#include "fiberbridge/app/scene_context.h"
+#include "fiberbridge/core/units.h"
+#include "fiberbridge/mpm/dcb.h"
+#include "fiberbridge/mpm/parameters.h"
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/patterns.h>
+
+#include <iostream>
+
+namespace fiberbridge::app {
+
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+using units::mm;
+
+void declare_mpm_section(dealii::ParameterHandler& prm) {
+  const mpm::MpmParameters d;
+  prm.enter_subsection("MPM");
+  prm.declare_entry("Cell size", std::to_string(d.cell_size / mm), Double(0),
+                    "Edge of the square background-grid cells in mm; at least 2 cells through "
+                    "each arm. Cost grows like 1/cell^3 (particles and time steps).");
+  prm.declare_entry("Particles per cell", std::to_string(d.particles_per_cell), Integer(1, 4),
+                    "Particles per cell along each axis (2 = four per cell).");
+  prm.declare_entry("CFL factor", std::to_string(d.cfl), Double(0, 0.9),
+                    "Time step as a fraction of the time a dilatational wave crosses one cell.");
+  prm.declare_entry("PIC fraction", std::to_string(d.pic_fraction), Double(0, 1),
+                    "PIC damping beta: particle velocity = (1-beta) FLIP + beta PIC update. "
+                    "Removes the kinetic energy that tip advances release.");
+  prm.declare_entry("Loading periods", std::to_string(d.loading_periods), Double(1),
+                    "Quasi-static loading: the load line reaches the LEFM initiation opening of "
+                    "corrected beam theory after this many vibration periods of an a0 arm.");
+  prm.declare_entry("Ramp periods", std::to_string(d.ramp_periods), Double(0),
+                    "The opening rate rises smoothly from zero over this many vibration periods.");
+  prm.declare_entry("Growth step", std::to_string(d.growth_step_cells), Integer(1, 4),
+                    "Tip advance per propagation event, in whole cells: the tip moves from node "
+                    "column to node column (the velocity fields split per node).");
+  prm.declare_entry("J window periods", std::to_string(d.j_window_periods), Double(0, 1),
+                    "Growth when the tip J averaged over this many arm periods (length a0) "
+                    "reaches J_tip; the window restarts at each advance.");
+  prm.declare_entry("Tip J domain", std::to_string(d.tip_j_cells), Double(1),
+                    "The tip J domain integral weights a frame from this many cells around the tip "
+                    "to two cells farther.");
+  prm.declare_entry("Rigid law rise fraction", std::to_string(d.rigid_law_rise_fraction),
+                    Double(0, 0.1),
+                    "Rigid laws (linear or exponential softening) get an elastic rise over this "
+                    "fraction of delta_c, so that the explicit time step stays finite.");
+  prm.declare_entry("End ligament", "0", Double(0),
+                    "Stop when the ligament ahead of the tip would be shorter than this, in mm; "
+                    "0 = the specimen height.");
+  prm.declare_entry("Steady growth", "0", Double(0),
+                    "Stop after the notch root has moved this far in mm (0 = run to the end "
+                    "ligament).");
+  prm.declare_entry("Maximum steps", std::to_string(d.max_steps), Integer(1),
+                    "Safety bound on the number of explicit time steps.");
+  prm.declare_entry("VTU every advances", std::to_string(d.vtu_every_advances), Integer(0),
+                    "Write particles (displacement, velocity, stress) every this many tip "
+                    "advances to mpm_particles_NNNN.vtu and mpm_particles.pvd (0 = none).");
+  prm.leave_subsection();
+}
+
+namespace {
+mpm::MpmParameters parse_mpm_section(dealii::ParameterHandler& prm) {
+  mpm::MpmParameters p;
+  prm.enter_subsection("MPM");
+  p.cell_size = prm.get_double("Cell size") * mm;
+  p.particles_per_cell = prm.get_integer("Particles per cell");
+  p.cfl = prm.get_double("CFL factor");
+  p.pic_fraction = prm.get_double("PIC fraction");
+  p.loading_periods = prm.get_double("Loading periods");
+  p.ramp_periods = prm.get_double("Ramp periods");
+  p.growth_step_cells = prm.get_integer("Growth step");
+  p.j_window_periods = prm.get_double("J window periods");
+  p.tip_j_cells = prm.get_double("Tip J domain");
+  p.rigid_law_rise_fraction = prm.get_double("Rigid law rise fraction");
+  p.end_ligament = prm.get_double("End ligament") * mm;
+  p.steady_growth = prm.get_double("Steady growth") * mm;
+  p.max_steps = prm.get_integer("Maximum steps");
+  p.vtu_every_advances = prm.get_integer("VTU every advances");
+  prm.leave_subsection();
+  p.validate();
+  return p;
+}
+} // namespace
+
+void run_mpm_item(SceneContext& ctx) {
+  const mpm::MpmParameters params = parse_mpm_section(*ctx.prm);
+  auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
+  law::SimulationResult result = mpm::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(),
+                                                   ctx.j_tip(), params, ctx.output_dir, progress);
+  report_simulation(ctx, std::move(result), "n_particles");
+}
+
+} // namespace fiberbridge::app
