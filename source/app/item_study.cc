@@ -122,6 +122,7 @@ struct Case {
   std::string name;
   std::string description;
   std::vector<std::string> sets;
+  std::string only_model; ///< non-empty: the case concerns this model only
 };
 
 /// DESIGN.md section 3 "Stability on stiff and extreme cases".
@@ -157,6 +158,11 @@ std::vector<Case> stability_cases() {
        "trilinear with sigma2 = 0.5 kPa",
        {"Cohesive law/Type=trilinear", "Cohesive law/Points=0.1:661, 1.0:0.5",
         "Cohesive law/Delta c=6"}},
+      {"fast_loading",
+       "PVA law loaded to initiation within one arm period (dynamic error)",
+       {"Cohesive law/Type=trilinear", "Cohesive law/Points=0.1:661, 1.0:187",
+        "Cohesive law/Delta c=6", "MPM/Loading periods=1"},
+       "mpm"},
   };
 }
 
@@ -179,7 +185,7 @@ void declare_study_section(dealii::ParameterHandler& prm) {
   prm.declare_entry("Stability cases", "all", dealii::Patterns::Anything(),
                     "Comma-separated case names, or all: stiff_initial_slope, brittle_limit, "
                     "zone_longer_than_ligament, snap_back, extreme_orthotropy, tiny_delta_c, "
-                    "huge_delta_c, near_zero_sigma2.");
+                    "huge_delta_c, near_zero_sigma2, fast_loading (MPM only).");
   prm.declare_entry("Target error", "0.01", dealii::Patterns::Double(0),
                     "The cheapest ladder level whose R_J and G_ss errors are both below this is "
                     "reported (beam, FEM).");
@@ -350,6 +356,8 @@ void run_study_item(SceneContext& ctx) {
     Json rows = Json::array();
     for (const auto& c : cases)
       for (const auto& model : stability_models) {
+        if (!c.only_model.empty() && c.only_model != model)
+          continue;
         std::cerr << "study: stability " << c.name << " with " << model << "\n";
         std::string outcome, diagnosis;
         const auto t0 = std::chrono::steady_clock::now();

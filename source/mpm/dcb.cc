@@ -144,11 +144,16 @@ void DcbModel::setup_loading() {
   const double opening0 = law::cbt_opening(spec_, mat_, P0, a0);
   rate_ = opening0 / (prm_.loading_periods * t_vib0_);
   ramp_time_ = prm_.ramp_periods * t_vib0_;
-  notes_.push_back("quasi-static loading: opening rate " + fmt(rate_) +
-                   " m/s reaches the LEFM initiation opening " + fmt(opening0 / mm) + " mm after " +
-                   fmt(prm_.loading_periods) + " vibration periods of the a0 arm (t_vib = " +
-                   fmt(t_vib0_ * 1e3) + " ms; time step " + fmt(solver_->dt()) + " s, " +
-                   fmt(t_vib0_ / solver_->dt()) + " steps per period)");
+  // A ramp of a few arm periods or less excites the arms: say so instead of calling it static.
+  notes_.push_back(std::string(prm_.loading_periods >= 4
+                                   ? "quasi-static loading"
+                                   : "FAST loading (dynamic: inertia enters the R curve, see the "
+                                     "kinetic energy)") +
+                   ": opening rate " + fmt(rate_) + " m/s reaches the LEFM initiation opening " +
+                   fmt(opening0 / mm) + " mm after " + fmt(prm_.loading_periods) +
+                   " vibration periods of the a0 arm (t_vib = " + fmt(t_vib0_ * 1e3) +
+                   " ms; time step " + fmt(solver_->dt()) + " s, " + fmt(t_vib0_ / solver_->dt()) +
+                   " steps per period)");
   if (!out_dir_.empty() && prm_.vtu_every_advances > 0)
     vtu_ = std::make_unique<ParticleVtuWriter>(out_dir_, "mpm_particles");
 }
