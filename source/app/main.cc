@@ -82,6 +82,9 @@ law::LawSpec law_from_options(const po::variables_map& vm) {
   return s;
 }
 
+/// Commands whose options are all named (forward, synth).
+po::positional_options_description no_positional;
+
 int cmd_run(const std::vector<std::string>& args) {
   po::options_description d("fiberbridge run SCENE.prm [options]");
   d.add_options()("scene", po::value<std::string>()->required(),
@@ -173,9 +176,8 @@ int cmd_forward(const std::vector<std::string>& args) {
   add_law_options(d);
   d.add_options()("out", po::value<std::string>()->default_value("output/forward"), "directory")(
       "points-out", po::value<int>()->default_value(400), "rows of the R(delta) table");
-  po::positional_options_description p;
   po::variables_map vm;
-  if (!parse(args, d, p, vm))
+  if (!parse(args, d, no_positional, vm))
     return 0;
   const auto spec = law_from_options(vm);
   const auto law = law::make_law(spec);
@@ -207,9 +209,8 @@ int cmd_synth(const std::vector<std::string>& args) {
       "noise", po::value<double>()->default_value(15), "std. dev. of R noise, J/m^2")(
       "delta-max", po::value<double>()->default_value(0), "largest opening in mm (0: 1.6 dc)")(
       "seed", po::value<unsigned>()->default_value(1), "random seed");
-  po::positional_options_description p;
   po::variables_map vm;
-  if (!parse(args, d, p, vm))
+  if (!parse(args, d, no_positional, vm))
     return 0;
   const auto spec = law_from_options(vm);
   const auto law = law::make_law(spec);
