@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace fiberbridge::analysis {
@@ -15,9 +16,12 @@ namespace fiberbridge::analysis {
 namespace {
 
 // Criterion constants (documented in steady_state.h).
-constexpr double initial_fraction = 0.02; ///< J_tip: delta below this fraction of the range
-constexpr std::size_t min_points = 3;     ///< J_tip and tail averages, rising-branch fit
-constexpr double reach_fraction = 0.05;   ///< delta_c: R first reaches G_ss - 5 % G_B
+/// J_tip: the hinge fit uses delta below this fraction of the range. Short enough to end before
+/// the second kink of R for the seed's laws (d2 = 1 mm of a 6-8 mm range), long enough to hold the
+/// flat part plus enough of the rise to fix its slope.
+constexpr double initial_fraction = 0.05;
+constexpr std::size_t min_points = 3;   ///< J_tip and tail averages, rising-branch fit
+constexpr double reach_fraction = 0.05; ///< delta_c: R first reaches G_ss - 5 % G_B
 /// The rising-branch line is fitted from where R first reaches G_ss - 20 % G_B up to the 5 %
 /// point: close enough to delta_c that one segment of a trilinear law usually holds the whole
 /// band (so the extension to G_ss is exact there), wide enough to average measurement noise.
@@ -42,6 +46,65 @@ std::string jm2(double x) {
   s.precision(5);
   s << x << " J/m^2";
   return s.str();
+}
+
+/// J_tip from the start of the curve. Seed Eq. 2 is exactly flat (R = J_tip) while delta stays
+/// on a linear elastic rise (delta <= d1) and rises linearly just after it (R' = (sigma -
+/// delta sigma')/2, constant on a linear softening segment). A plain mean over a fixed window
+/// is biased high as soon as the window passes d1 (+2.7 J/m^2 on the clean PVA curve to 8 mm
+/// with a 2 % window); the hinge model R = c + s max(0, delta - delta_h), fitted by least squares
+/// for every data point as hinge, finds the flat level c without knowing d1. With no flat part
+/// in the data (a rigid law, or d1 below the first point) the best hinge is the first point and
+/// c is the rising line extrapolated to it.
+struct InitialFlat {
+  double level = 0, hinge = 0, window_end = 0;
+  std::size_t n_window = 0;
+};
+
+InitialFlat fit_initial_flat(const std::vector<double>& d, const std::vector<double>& R) {
+  const std::size_t N = d.size();
+  const double range = d.back() - d.front();
+  std::size_t n = 0;
+  while (n < N && d[n] <= d.front() + initial_fraction * range)
+    ++n;
+  n = std::min(N, std::max(n, 2 * min_points));
+  InitialFlat best;
+  best.n_window = n;
+  best.window_end = d[n - 1];
+  double best_sse = std::numeric_limits<double>::infinity();
+  // Hinge at point k: regressors 1 and z_i = max(0, d_i - d_k); the 2x2 normal equations.
+  for (std::size_t k = 0; k + 2 < n; ++k) {
+    double sz = 0, szz = 0, sy = 0, szy = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double z = std::max(0.0, d[i] - d[k]);
+      sz += z;
+      szz += z * z;
+      sy += R[i];
+      szy += z * R[i];
+    }
+    const double det = n * szz - sz * sz;
+    if (!(det > 0))
+      continue;
+    const double c = (szz * sy - sz * szy) / det;
+    const double slope = (n * szy - sz * sy) / det;
+    if (slope < 0) // R never falls after the flat part (Eq. 2 with sigma >= 0)
+      continue;
+    double sse = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double e = R[i] - c - slope * std::max(0.0, d[i] - d[k]);
+      sse += e * e;
+    }
+    if (sse < best_sse) {
+      best_sse = sse;
+      best.level = c;
+      best.hinge = d[k];
+    }
+  }
+  if (!std::isfinite(best_sse)) { // no rise in the window: R is flat there
+    best.level = mean(R, 0, n);
+    best.hinge = d[n - 1];
+  }
+  return best;
 }
 
 } // namespace
@@ -72,14 +135,12 @@ SteadyState find_steady_state(const RDeltaCurve& curve, const SteadyStateOptions
     ss.j_tip_automatic = false;
     why << "J_tip = " << jm2(ss.j_tip) << " (given). ";
   } else {
-    std::size_t n0 = 0;
-    while (n0 < N && d[n0] < d.front() + initial_fraction * range)
-      ++n0;
-    n0 = std::max(n0, min_points);
-    ss.j_tip = mean(R, 0, n0);
-    why << "J_tip = " << jm2(ss.j_tip) << ": mean R of the " << n0
-        << " points with delta <= " << mm(d[n0 - 1])
-        << " (2 % of the delta range, at least 3 points). ";
+    const InitialFlat flat = fit_initial_flat(d, R);
+    ss.j_tip = flat.level;
+    why << "J_tip = " << jm2(ss.j_tip) << ": flat level of a hinge fit (R constant, then rising "
+        << "linearly) to the " << flat.n_window << " points with delta <= " << mm(flat.window_end)
+        << " (" << initial_fraction * 100 << " % of the delta range, at least " << 2 * min_points
+        << " points), hinge at delta = " << mm(flat.hinge) << ". ";
   }
 
   // G_ss: the mean of the tail, which must be flat.
@@ -118,7 +179,9 @@ SteadyState find_steady_state(const RDeltaCurve& curve, const SteadyStateOptions
       // Without a plateau (seed: solid wood "does not actually reach G_ss") the user's delta_c
       // closes Eq. 5, whose law then has area R(delta_c) - J_tip: that R is the G_ss used.
       ss.G_ss = interpolate_linear(d, R, ss.delta_c);
-      if (!(ss.j_tip < ss.G_ss))
+      // Relative round-off margin: a J_tip fitted on a flat start equal to R(delta_c) is no
+      // bridging toughness, whatever its last digit says.
+      if (!(ss.G_ss - ss.j_tip > 1e-9 * std::abs(ss.G_ss)))
         throw InputError(source + ": J_tip = " + jm2(ss.j_tip) + " is not below R(delta_c) = " +
                          jm2(ss.G_ss) + " at the given delta_c = " + mm(ss.delta_c) +
                          "; there is no bridging toughness up to delta_c");

@@ -7,10 +7,10 @@
 namespace fiberbridge::analysis {
 
 struct SteadyStateOptions {
-  double delta_c = 0;      ///< > 0: user-given delta_c [m] (must lie inside the data)
-  double j_tip = 0;        ///< > 0: user-given J_tip [J/m^2]
-  double tail_fraction = 0.2;   ///< plateau window: the last fraction of the delta range
-  double plateau_band = 0.02;   ///< |slope*window| must stay below this fraction of G_B
+  double delta_c = 0;         ///< > 0: user-given delta_c [m] (must lie inside the data)
+  double j_tip = 0;           ///< > 0: user-given J_tip [J/m^2]
+  double tail_fraction = 0.2; ///< plateau window: the last fraction of the delta range
+  double plateau_band = 0.02; ///< |slope*window| must stay below this fraction of G_B
 };
 
 struct SteadyState {
@@ -26,8 +26,9 @@ struct SteadyState {
 ///  - G_ss: mean of R over the last `tail_fraction` of the delta range; the tail must be flat:
 ///    a least-squares slope over it times its width below `plateau_band` * (G_ss - J_tip), else
 ///    ComputationError "no steady state in <file>".
-///  - J_tip: mean R over the initial flat part (delta below 2 % of the range, at least 3 points);
-///    R is exactly flat there for laws with an elastic rise (seed Eq. 2).
+///  - J_tip: the flat level of a hinge fit (R constant up to a hinge, then rising linearly) to
+///    the points with delta below 5 % of the range (at least 6); R is exactly flat below d1 for
+///    laws with an elastic rise and rises linearly just after it (seed Eq. 2).
 ///  - delta_c: where the rising branch meets the plateau: the first grid point whose R reaches
 ///    G_ss - 5 % of G_B, then the line fitted to the rising branch just before it is extended to
 ///    G_ss (the kink of R at delta_c has a non-zero left slope for trilinear laws).
