@@ -1,9 +1,16 @@
 // Scene item "fem": the deal.II DCB model (DESIGN.md section 2). Reads the FEM section, runs the
 // simulation with the scene's specimen, material, law and J_tip, and reports through the common
 // simulation writer.
+//
+// Engines (FEM/Engine, issue 6): the serial 2D engine (simulate_dcb) or the distributed 2D/3D
+// engine (simulate_dcb_distributed) on all ranks of MPI_COMM_WORLD. Under mpirun every rank runs
+// this item (the distributed engine is collective); only rank 0 prints progress, and the file
+// writers are switched off on the other ranks (core/output_guard.h).
 #include "fiberbridge/app/scene_context.h"
 #include "fiberbridge/fem/dcb_simulation.h"
+#include "fiberbridge/fem/distributed_dcb.h"
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <iostream>
@@ -21,10 +28,37 @@ void run_fem_item(SceneContext& ctx) {
   ctx.prm->enter_subsection("FEM");
   params.parse_parameters(*ctx.prm);
   ctx.prm->leave_subsection();
-  auto result =
-      fem::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params,
-                        ctx.output_dir, [](const std::string& line) { std::cerr << line << '\n'; });
+  const unsigned n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  const bool rank0 = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool distributed = fem::use_distributed_engine(params, n_ranks);
+  std::function<void(const std::string&)> progress;
+  if (rank0)
+    progress = [](const std::string& line) { std::cerr << line << '\n'; };
+  law::SimulationResult result;
+  fem::DistributedRunInfo info;
+  if (distributed)
+    result = fem::simulate_dcb_distributed(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(),
+                                           params, ctx.output_dir, progress, MPI_COMM_WORLD, &info);
+  else
+    result = fem::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params,
+                               ctx.output_dir, progress);
   report_simulation(ctx, std::move(result), "n_dofs");
+  auto& block = ctx.summary["fem"];
+  block["engine"] = distributed ? "distributed" : "serial";
+  block["n_ranks"] = distributed ? n_ranks : 1u;
+  block["dimension"] = params.dimension;
+  if (distributed) {
+    block["n_cells"] = info.n_cells;
+    block["peak_memory_MB_all_ranks"] = info.peak_memory_MB_sum;
+    block["peak_memory_MB_max_rank"] = info.peak_memory_MB_max;
+    block["memory_MB_per_million_dofs"] =
+        info.n_dofs > 0 ? info.peak_memory_MB_sum / (double(info.n_dofs) / 1e6) : 0.0;
+    block["time_breakdown_s"] = {{"setup", info.t_setup},         {"assembly", info.t_assemble},
+                                 {"factorize", info.t_factorize}, {"solve", info.t_solve},
+                                 {"J_integrals", info.t_j},       {"output", info.t_output}};
+    block["factorizations"] = info.n_factorizations;
+    block["newton_iterations"] = info.n_newton;
+  }
 }
 
 } // namespace fiberbridge::app

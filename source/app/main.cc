@@ -5,6 +5,7 @@
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/output_guard.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/law_spec.h"
 
@@ -99,7 +100,8 @@ int cmd_run(const std::vector<std::string>& args) {
   if (vm.count("set"))
     sets = vm["set"].as<std::vector<std::string>>();
   const auto out = app::run_scene(vm["scene"].as<std::string>(), sets);
-  std::cout << "results in " << out << " (summary.json)\n";
+  if (output_enabled())
+    std::cout << "results in " << out << " (summary.json)\n";
   return 0;
 }
 
@@ -237,6 +239,12 @@ int cmd_synth(const std::vector<std::string>& args) {
 
 int main(int argc, char** argv) {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // Under mpirun every rank runs the command (the distributed FEM is collective); rank 0 alone
+  // writes the shared files and prints (core/output_guard.h). Errors found identically on all
+  // ranks (input errors) are printed by rank 0 only; others carry the rank.
+  const unsigned rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  set_output_enabled(rank == 0);
+  const std::string on_rank = rank == 0 ? "" : " [MPI rank " + std::to_string(rank) + "]";
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     std::cout << usage;
@@ -262,14 +270,16 @@ int main(int argc, char** argv) {
     std::cerr << "fiberbridge: unknown command '" << cmd << "' (see fiberbridge --help)\n";
     return 2;
   } catch (const po::error& e) {
-    std::cerr << "fiberbridge " << cmd << ": " << e.what() << " (see fiberbridge " << cmd
-              << " --help)\n";
+    if (rank == 0)
+      std::cerr << "fiberbridge " << cmd << ": " << e.what() << " (see fiberbridge " << cmd
+                << " --help)\n";
   } catch (const InputError& e) {
-    std::cerr << "fiberbridge " << cmd << ": input error: " << e.what() << "\n";
+    if (rank == 0)
+      std::cerr << "fiberbridge " << cmd << ": input error: " << e.what() << "\n";
   } catch (const ComputationError& e) {
-    std::cerr << "fiberbridge " << cmd << ": cannot compute: " << e.what() << "\n";
+    std::cerr << "fiberbridge " << cmd << on_rank << ": cannot compute: " << e.what() << "\n";
   } catch (const std::exception& e) {
-    std::cerr << "fiberbridge " << cmd << ": error: " << e.what() << "\n";
+    std::cerr << "fiberbridge " << cmd << on_rank << ": error: " << e.what() << "\n";
   }
   return 1;
 }

@@ -4,6 +4,7 @@
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/output_guard.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -178,15 +179,20 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
   ctx.prm = &prm;
   ctx.scene_file = prm_file;
   ctx.output_dir = prm.get("Output directory");
+  // Under mpirun only rank 0 writes (core/output_guard.h); the others must not remove the
+  // summary rank 0 is about to write either.
+  const bool writer = output_enabled();
   ensure_directory(ctx.output_dir);
-  remove_stale_summary(ctx.output_dir);
+  if (writer)
+    remove_stale_summary(ctx.output_dir);
   ctx.summary["scene"] = prm_file;
   ctx.summary["run"] = wanted;
   ctx.summary["plots"] = Json::array();
   for (const auto& item : scene_items()) {
     if (!wanted_set.count(item.name))
       continue;
-    std::cerr << "fiberbridge: running " << item.name << "\n";
+    if (writer)
+      std::cerr << "fiberbridge: running " << item.name << "\n";
     const auto ti = std::chrono::steady_clock::now();
     item.run(ctx);
     ctx.summary["item_wall_time_s"][item.name] =
@@ -194,14 +200,15 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
   }
   ctx.summary["wall_time_s"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  {
+  if (writer) {
     std::ofstream used(ctx.out("parameters_used.prm"));
     prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
   }
   const std::string report = text_report(ctx.summary);
   write_file_atomically(ctx.out("report.txt"), report);
   write_json_atomically(ctx.out("summary.json"), ctx.summary);
-  std::cout << report;
+  if (writer)
+    std::cout << report;
   return ctx.output_dir;
 }
 

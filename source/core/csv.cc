@@ -1,6 +1,7 @@
 #include "fiberbridge/core/csv.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/output_guard.h"
 
 #include <cerrno>
 #include <cmath>
@@ -124,6 +125,8 @@ std::vector<double> CsvTable::numeric(const std::string& name) const {
 }
 
 void write_file_atomically(const std::string& path, const std::string& content) {
+  if (!output_enabled()) // an MPI rank other than 0: rank 0 writes this file (output_guard.h)
+    return;
   const std::string tmp = path + ".partial";
   {
     std::ofstream out(tmp, std::ios::trunc);

@@ -1,5 +1,7 @@
 #include "fiberbridge/core/plot.h"
 
+#include "fiberbridge/core/output_guard.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -13,6 +15,8 @@ std::string gnuplot_png_preamble(const std::string& png_name, int width, int hei
 }
 
 bool run_gnuplot(const std::string& dir, const std::string& script) {
+  if (!output_enabled()) // an MPI rank other than 0 (output_guard.h)
+    return false;
   static const bool have_gnuplot = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
   if (!have_gnuplot)
     return false;

@@ -34,6 +34,7 @@
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/fem/cohesive_interface.h"
+#include "fiberbridge/fem/dcb_common.h"
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/index_set.h>
@@ -84,104 +85,8 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-std::string fmt(double v, int precision = 4) {
-  std::ostringstream s;
-  s << std::setprecision(precision) << v;
-  return s.str();
-}
-
-/// In-plane stiffness of the orthotropic wood (1 = L along x, 2 = T along y, 3 = R out of plane).
-/// Plane strain eliminates sigma_33 through the reduced compliance S_ij - S_i3 S_j3 / S_33.
-SymmetricTensor<4, dim> orthotropic_stiffness(const law::Material& m, const FemParameters& p) {
-  double s11 = 1 / m.E_L, s22 = 1 / m.E_T, s12 = -m.nu_LT / m.E_L;
-  if (!m.plane_stress) {
-    const double E_R = p.E_R_over_E_L * m.E_L;
-    const double s33 = 1 / E_R, s13 = -p.nu_LR / m.E_L, s23 = -p.nu_RT / E_R;
-    s11 -= s13 * s13 / s33;
-    s22 -= s23 * s23 / s33;
-    s12 -= s13 * s23 / s33;
-  }
-  const double det = s11 * s22 - s12 * s12;
-  if (!(det > 0))
-    throw InputError("Material/FEM: the in-plane orthotropic compliance is not positive "
-                     "definite; check nu_LT, nu_LR, nu_RT and E_R over E_L");
-  SymmetricTensor<4, dim> C;
-  C[0][0][0][0] = s22 / det;
-  C[1][1][1][1] = s11 / det;
-  C[0][0][1][1] = -s12 / det;
-  C[1][1][0][0] = -s12 / det;
-  C[0][1][0][1] = m.G_LT; // sigma_xy = 2 C_0101 eps_xy = G_LT gamma_xy
-  return C;
-}
-
-/// A law with sigma(0) > 0 cannot be inserted at a tied (zero-opening) node: it would pull with
-/// sigma(0) at no opening. It gets an elastic rise from the origin to the envelope with slope k.
-class ElasticRiseLaw : public law::TractionLaw {
-public:
-  ElasticRiseLaw(const law::TractionLaw& base, double k) : base_(base) {
-    delta_e_ = base.envelope(0) / k;
-    for (int i = 0; i < 20; ++i) // fixed point of delta_e = sigma(delta_e)/k (sigma decreasing)
-      delta_e_ = base.envelope(delta_e_) / k;
-    sigma_e_ = base.envelope(delta_e_);
-    const auto kinks = base.kinks();
-    const double first = kinks.size() > 1 ? kinks[1] : base.critical_opening();
-    if (!(delta_e_ > 0 && delta_e_ < 0.5 * first))
-      throw InputError("FEM/Rigid law stiffness factor: the elastic rise of the " + base.name() +
-                       " law would reach " + fmt(delta_e_ / units::mm) +
-                       " mm, not small against its first kink; raise the factor");
-  }
-  std::string name() const override { return base_.name(); }
-  double envelope(double d) const override {
-    return d < delta_e_ ? sigma_e_ * d / delta_e_ : base_.envelope(d);
-  }
-  double envelope_slope(double d) const override {
-    return d < delta_e_ ? sigma_e_ / delta_e_ : base_.envelope_slope(d);
-  }
-  double envelope_integral(double d) const override {
-    if (d <= delta_e_)
-      return 0.5 * sigma_e_ / delta_e_ * d * d;
-    return 0.5 * sigma_e_ * delta_e_ + base_.envelope_integral(d) -
-           base_.envelope_integral(delta_e_);
-  }
-  double critical_opening() const override { return base_.critical_opening(); }
-  std::vector<double> kinks() const override {
-    std::vector<double> k{0.0, delta_e_};
-    for (double b : base_.kinks())
-      if (b > delta_e_)
-        k.push_back(b);
-    return k;
-  }
-  double delta_e() const { return delta_e_; }
-
-private:
-  const law::TractionLaw& base_;
-  double delta_e_ = 0, sigma_e_ = 0;
-};
-
-/// Weight q(x) of the domain J integral: 0 outside [x0, x3], 1 on [x1, x2], linear between.
-/// q depends on x only, so the strip spans both arms and the top and bottom faces (n_x = 0,
-/// traction-free) add nothing; its kinks sit on mesh lines, so Gauss quadrature is exact.
-struct Ramp {
-  double x0, x1, x2, x3;
-  double value(double x) const {
-    if (x <= x0 || x >= x3)
-      return 0;
-    if (x < x1)
-      return (x - x0) / (x1 - x0);
-    if (x <= x2)
-      return 1;
-    return (x3 - x) / (x3 - x2);
-  }
-  double slope(double x) const {
-    if (x <= x0 || x >= x3)
-      return 0;
-    if (x < x1)
-      return 1 / (x1 - x0);
-    if (x <= x2)
-      return 0;
-    return -1 / (x3 - x2);
-  }
-};
+// fmt, orthotropic_stiffness, ElasticRiseLaw and Ramp live in dcb_common (shared with the
+// distributed engine).
 
 /// sigma_xx, sigma_yy, sigma_xy [Pa] for DataOut.
 class StressPostprocessor : public DataPostprocessor<dim> {
@@ -403,9 +308,9 @@ DcbModel::DcbModel(const law::Specimen& specimen, const law::Material& material,
                    const std::string& output_dir,
                    const std::function<void(const std::string&)>& progress)
     : specimen_(specimen), material_(material), user_law_(law), j_tip_(j_tip), prm_(parameters),
-      output_dir_(output_dir), progress_(progress), C_(orthotropic_stiffness(material, parameters)),
-      fe_(FE_Q<dim>(parameters.degree), dim), dof_handler_(triangulation_),
-      direct_solver_(parameters.linear_solver) {
+      output_dir_(output_dir), progress_(progress),
+      C_(orthotropic_stiffness<dim>(material, parameters)), fe_(FE_Q<dim>(parameters.degree), dim),
+      dof_handler_(triangulation_), direct_solver_(parameters.linear_solver) {
   specimen_.validate();
   material_.validate();
   prm_.validate();

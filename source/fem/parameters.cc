@@ -32,9 +32,35 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Residual norm relative to the load-line reaction norm.");
   prm.declare_entry("Maximum Newton iterations", "25", Integer(1),
                     "Nonlinear iterations per equilibrium solve (either nonlinear solver).");
-  prm.declare_entry("Linear solver", "klu", dealii::Patterns::Selection("klu|umfpack"),
-                    "Sparse direct solver of the Jacobian systems: klu (Trilinos Amesos KLU) or "
-                    "umfpack (UMFPACK through deal.II). Both give the same R curve to round-off.");
+  prm.declare_entry("Linear solver", "klu", dealii::Patterns::Selection("klu|umfpack|mumps|cg_amg"),
+                    "Solver of the Jacobian systems. Serial engine: klu (Trilinos Amesos KLU) or "
+                    "umfpack (UMFPACK through deal.II); both give the same R curve to round-off. "
+                    "Distributed engine: mumps (Trilinos Amesos MUMPS, distributed direct; the "
+                    "choice for MPI runs), klu (Amesos KLU: the matrix is gathered on one rank), "
+                    "or cg_amg (CG with Trilinos ML AMG: the Jacobian is made SPD by using the "
+                    "secant instead of the negative softening tangent, so Newton becomes a "
+                    "quasi-Newton with the same residual test; for meshes too large for a direct "
+                    "solver).");
+  prm.declare_entry("Dimension", "2", Integer(2, 3),
+                    "2: plane stress/strain (Material/Plane); 3: the specimen extruded over "
+                    "Specimen/Width with free side faces (Material/Plane is then not used).");
+  prm.declare_entry("Engine", "auto", dealii::Patterns::Selection("auto|serial|distributed"),
+                    "serial: the one-process 2D engine (KLU/UMFPACK with low-rank updates); "
+                    "distributed: deal.II parallel::distributed::Triangulation (p4est) with "
+                    "Trilinos MPI matrices, for 3D and for mpirun; auto: distributed when "
+                    "Dimension = 3, when run on more than one MPI rank, or when Linear solver is "
+                    "mumps or cg_amg, else serial.");
+  prm.declare_entry("Width elements", "0", Integer(0),
+                    "3D only: element layers across the width (0: width / element size, "
+                    "rounded, at least 1).");
+  prm.declare_entry("G_LR over E_L", "0.064", Double(0),
+                    "3D only: shear modulus in the L-R (x-z) plane over E_L (Wood Handbook, "
+                    "Douglas-fir).");
+  prm.declare_entry("G_RT over E_L", "0.007", Double(0),
+                    "3D only: shear modulus in the R-T (z-y) plane over E_L (Wood Handbook, "
+                    "Douglas-fir).");
+  prm.declare_entry("Linear tolerance", "1e-10", Double(0, 1),
+                    "cg_amg only: CG stops at this residual relative to the right-hand side.");
   prm.declare_entry("Nonlinear solver", "newton", dealii::Patterns::Selection("newton|kinsol"),
                     "newton: own Newton with backtracking line search; kinsol: SUNDIALS KINSOL "
                     "with its line search. Same Jacobian, same tolerance; a KINSOL result is "
@@ -56,10 +82,10 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Output every", "0", Integer(0),
                     "Write VTU every N tip advances (0: only the final state).");
   prm.declare_entry("E_R over E_L", "0.068", Double(0),
-                    "Out-of-plane (radial) modulus ratio, plane strain only (Wood Handbook, "
-                    "Douglas-fir).");
-  prm.declare_entry("nu_LR", "0.292", Double(0, 0.5), "Plane strain only.");
-  prm.declare_entry("nu_RT", "0.390", Double(0, 1), "Plane strain only.");
+                    "Radial (out-of-plane, z) modulus ratio; used by plane strain (2D) and by "
+                    "3D (Wood Handbook, Douglas-fir).");
+  prm.declare_entry("nu_LR", "0.292", Double(0, 0.5), "Plane strain (2D) and 3D only.");
+  prm.declare_entry("nu_RT", "0.390", Double(0, 1), "Plane strain (2D) and 3D only.");
 }
 
 void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
@@ -73,7 +99,20 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   newton_tolerance = prm.get_double("Newton tolerance");
   max_newton_iterations = prm.get_integer("Maximum Newton iterations");
   // The patterns admit only these values.
-  linear_solver = prm.get("Linear solver") == "umfpack" ? LinearSolver::umfpack : LinearSolver::klu;
+  const std::string ls = prm.get("Linear solver");
+  linear_solver = ls == "umfpack"  ? LinearSolver::umfpack
+                  : ls == "mumps"  ? LinearSolver::mumps
+                  : ls == "cg_amg" ? LinearSolver::cg_amg
+                                   : LinearSolver::klu;
+  dimension = prm.get_integer("Dimension");
+  const std::string engine_name = prm.get("Engine");
+  engine = engine_name == "serial"        ? Engine::serial
+           : engine_name == "distributed" ? Engine::distributed
+                                          : Engine::automatic;
+  width_elements = prm.get_integer("Width elements");
+  G_LR_over_E_L = prm.get_double("G_LR over E_L");
+  G_RT_over_E_L = prm.get_double("G_RT over E_L");
+  linear_tolerance = prm.get_double("Linear tolerance");
   nonlinear_solver =
       prm.get("Nonlinear solver") == "kinsol" ? NonlinearSolver::kinsol : NonlinearSolver::newton;
   contact_stiffness_factor = prm.get_double("Contact stiffness factor");
@@ -110,6 +149,19 @@ void FemParameters::validate() const {
   require(steady_state_window > 0, "Steady-state window", "must be positive (mm)");
   require(plateau_tolerance > 0, "Plateau tolerance", "must be positive");
   require(E_R_over_E_L > 0, "E_R over E_L", "must be positive");
+  require(dimension == 2 || dimension == 3, "Dimension", "must be 2 or 3");
+  require(G_LR_over_E_L > 0, "G_LR over E_L", "must be positive");
+  require(G_RT_over_E_L > 0, "G_RT over E_L", "must be positive");
+  require(linear_tolerance > 0 && linear_tolerance < 1, "Linear tolerance", "must lie in (0, 1)");
+  // The serial engine is 2D and has only the serial direct solvers; the distributed engine
+  // has no UMFPACK (deal.II's is serial) and no KINSOL coupling yet.
+  require(!(engine == Engine::serial && dimension == 3), "Engine",
+          "serial is 2D only; Dimension = 3 needs Engine = distributed (or auto)");
+  require(!(engine == Engine::serial &&
+            (linear_solver == LinearSolver::mumps || linear_solver == LinearSolver::cg_amg)),
+          "Linear solver",
+          "mumps and cg_amg need the distributed engine (Engine = "
+          "distributed, or Dimension = 3, or mpirun)");
 }
 
 } // namespace fiberbridge::fem

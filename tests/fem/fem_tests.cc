@@ -484,5 +484,9 @@ TEST(FemParameters, SolverChoices) {
   p.parse_parameters(prm);
   EXPECT_EQ(p.linear_solver, fem::FemParameters::LinearSolver::umfpack);
   EXPECT_EQ(p.nonlinear_solver, fem::FemParameters::NonlinearSolver::kinsol);
-  EXPECT_ANY_THROW(prm.parse_input_from_string("set Linear solver = mumps\n"));
+  // mumps and cg_amg are the distributed engine's solvers (issue 6); anything else is rejected.
+  prm.parse_input_from_string("set Linear solver = mumps\n");
+  p.parse_parameters(prm);
+  EXPECT_EQ(p.linear_solver, fem::FemParameters::LinearSolver::mumps);
+  EXPECT_ANY_THROW(prm.parse_input_from_string("set Linear solver = pardiso\n"));
 }

@@ -42,8 +42,10 @@ struct FemParameters {
   /// KLU is the faster here: seed PVA run, Q1 2 mm, 3.1 s against 4.3 s (its solves are 3x
   /// cheaper than UMFPACK's, which refine iteratively).
   enum class LinearSolver {
-    klu,    ///< Trilinos Amesos KLU (needs MPI initialized, as the fiberbridge program does)
-    umfpack ///< deal.II's SparseDirectUMFPACK (serial, needs nothing)
+    klu,     ///< Trilinos Amesos KLU (needs MPI initialized, as the fiberbridge program does)
+    umfpack, ///< deal.II's SparseDirectUMFPACK (serial engine only)
+    mumps,   ///< Trilinos Amesos MUMPS, distributed (distributed engine only)
+    cg_amg   ///< CG + Trilinos ML AMG on an SPD (secant) Jacobian (distributed engine only)
   };
   LinearSolver linear_solver = LinearSolver::klu;
   /// Nonlinear solver of one equilibrium. Both use the exact Jacobian, a line search and the
@@ -64,6 +66,22 @@ struct FemParameters {
   double E_R_over_E_L = 0.068;
   double nu_LR = 0.292;
   double nu_RT = 0.390;
+  /// 3D shear moduli (Wood Handbook, Douglas-fir: G_LR/E_L = 0.064, G_RT/E_L = 0.007).
+  double G_LR_over_E_L = 0.064;
+  double G_RT_over_E_L = 0.007;
+
+  /// Space dimension of the model: 2 (plane stress/strain) or 3 (the specimen extruded over
+  /// Specimen/Width, free side faces).
+  unsigned int dimension = 2;
+  /// Which engine runs the model. automatic: distributed when dimension = 3, when the program
+  /// runs on more than one MPI rank, or when the linear solver is mumps or cg_amg; else serial
+  /// (the serial engine, with its low-rank updates, is the faster on one core).
+  enum class Engine { automatic, serial, distributed };
+  Engine engine = Engine::automatic;
+  /// 3D only: element layers across the width (0: width / element size, rounded, at least 1).
+  unsigned int width_elements = 0;
+  /// cg_amg only: CG stops at this residual relative to the right-hand side.
+  double linear_tolerance = 1e-10;
 
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);

@@ -1,0 +1,1697 @@
+#pragma once
+// The distributed DCB engine (distributed_dcb.h), templated on the space dimension and
+// instantiated in distributed_dcb_2d.cc and distributed_dcb_3d.cc (one heavy translation unit
+// each, so that they compile in parallel).
+//
+// Same algorithm as the serial DcbModel (dcb_simulation.cc; read that file's header first), with
+// what MPI changes:
+// - Mesh: the serial mesh (crack-plane vertices doubled; in 3D extruded over the width) is the
+//   coarse mesh of a parallel::distributed::Triangulation. p4est builds its tree connectivity
+//   from shared vertices, and the two arms share none on the crack plane, so the slit stays
+//   open; p4est partitions the cells (each coarse cell is a tree, no refinement).
+// - The crack plane (ties, cohesive points, the notch-root bookkeeping) is small next to the
+//   bulk: every rank holds ALL crack-plane dofs as ghosts (gathered with all_gather) and keeps an
+//   identical copy of the CohesiveInterface. A tied pair can live on two ranks that do not
+//   neighbour each other; with both dofs relevant everywhere, AffineConstraints condenses ties
+//   across ranks, and the Trilinos matrix takes the off-process rows at compress(add).
+// - The sparsity pattern holds the couplings of every crack-plane pair from the start (cell dofs
+//   extended by their partners, as in the serial engine), so releasing ties never changes it.
+// - Cohesive terms: each row of crack-plane faces (a "segment", the whole width in 3D) is
+//   assembled by the rank that owns its first top dof.
+// - Every decision that steers the algorithm (convergence, line search, tip J against J_tip)
+//   uses sums reduced on rank 0 and broadcast, so all ranks take the same branch bit for bit.
+// - Linear solves: Amesos MUMPS (or KLU) on the distributed matrix, factorized after each release.
+//   Between releases the Jacobian differs from the factorized one only at the interface points
+//   that changed branch (a low-rank change, as in the serial engine's Woodbury update): the
+//   current Jacobian is then solved by GMRES preconditioned with the old factorization, which
+//   converges in about (changed points + 1) iterations, each one triangular solve; only when
+//   that takes many iterations is the Jacobian refactorized. In 3D a branch change happens at
+//   every z point of a station, and a factorization costs ~40 triangular solves (measured with
+//   KLU on 2232 dofs: 76 ms against 2 ms), so this is what makes 3D affordable.
+//   Or CG + ML AMG on an SPD secant Jacobian.
+#include "fiberbridge/core/csv.h"
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
+#include "fiberbridge/fem/cohesive_interface.h"
+#include "fiberbridge/fem/dcb_common.h"
+#include "fiberbridge/fem/distributed_dcb.h"
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+#include <deal.II/sundials/kinsol.h>
+
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+namespace fiberbridge::fem::distributed {
+
+using namespace dealii;
+using Clock = std::chrono::steady_clock;
+using Vec = TrilinosWrappers::MPI::Vector;
+
+inline double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// Stress components [Pa] for DataOut.
+template <int dim>
+class StressPostprocessor : public DataPostprocessor<dim> {
+public:
+  explicit StressPostprocessor(const SymmetricTensor<4, dim>& C) : C_(C) {}
+  void evaluate_vector_field(const DataPostprocessorInputs::Vector<dim>& in,
+                             std::vector<Vector<double>>& out) const override {
+    for (unsigned int q = 0; q < in.solution_gradients.size(); ++q) {
+      SymmetricTensor<2, dim> eps;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          eps[i][j] = 0.5 * (in.solution_gradients[q][i][j] + in.solution_gradients[q][j][i]);
+      const SymmetricTensor<2, dim> s = C_ * eps;
+      unsigned k = 0;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          out[q](k++) = s[i][j];
+    }
+  }
+  std::vector<std::string> get_names() const override {
+    const char* axis = "xyz";
+    std::vector<std::string> n;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        n.push_back(std::string("stress_") + axis[i] + axis[j] + "_Pa");
+    return n;
+  }
+  UpdateFlags get_needed_update_flags() const override { return update_gradients; }
+
+private:
+  SymmetricTensor<4, dim> C_;
+};
+
+template <int dim>
+class DistributedDcbModel {
+public:
+  DistributedDcbModel(const law::Specimen& specimen, const law::Material& material,
+                      const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
+                      const std::string& output_dir,
+                      const std::function<void(const std::string&)>& progress, MPI_Comm comm);
+  law::SimulationResult run();
+  const DistributedRunInfo& info() const { return info_; }
+
+private:
+  /// One pair of coincident crack-plane support points (a "node"), at station (ix, iz).
+  struct Node {
+    double x = 0, z = 0;
+    types::global_dof_index top[dim], bottom[dim];
+  };
+  struct PointMap {
+    std::vector<unsigned> nodes; ///< global node indices
+    std::vector<unsigned> local; ///< their positions in the segment's node list
+    std::vector<double> N, dN;   ///< Lagrange weights and their x-derivatives
+  };
+  /// Interface points at one x inside one segment (all z in 3D), with their z weights.
+  struct Station {
+    std::vector<unsigned> points;
+    std::vector<double> wz;
+  };
+
+  // Setup.
+  void make_grid();
+  void setup_system();
+  void make_interface();
+  void make_constraints(double opening, AffineConstraints<double>& c) const;
+  // Algebra.
+  double gsum(double local) const;
+  double norm(const Vec& v) const;
+  void assemble_residual(const Vec& u, Vec& r, Vec& r_full);
+  void update_jacobian();
+  void solve_linear(const Vec& rhs, Vec& x);
+  void predict(double opening);
+  double reaction_norm(const Vec& r_full) const;
+  bool newton(double opening, std::string& diagnosis);
+  bool kinsol(double opening, std::string& diagnosis);
+  void solve_at(double target);
+  void sync() { u_ghost_ = u_; }
+  // Growth.
+  bool load_to_critical();
+  void release_tip();
+  // Measurements (on u_ghost_).
+  std::vector<double> node_openings() const;
+  std::vector<double> openings() const;
+  double station_opening(unsigned ix, const std::vector<double>& nodal) const;
+  double domain_j(const Ramp& q, bool crack_face_term) const;
+  double crack_face_j(const Ramp* ramp) const;
+  double tip_j() const;
+  double far_field_j() const;
+  double bulk_energy() const; ///< per width [J/m]
+  double stored_energy() const;
+  double load_per_width();
+  law::RCurvePoint record_advance();
+  bool reached_steady_state(double first_root_move);
+  void output_fields(unsigned advance);
+  void write_interface_csv() const;
+  void report(const std::string& line) const {
+    if (progress_ && rank_ == 0)
+      progress_(line);
+  }
+  unsigned node_index(unsigned ix, unsigned iz) const { return ix * n_z_ + iz; }
+
+  const law::Specimen specimen_;
+  const law::Material material_;
+  const law::TractionLaw& user_law_;
+  std::unique_ptr<ElasticRiseLaw> regularized_law_;
+  const law::TractionLaw* law_ = nullptr;
+  const double j_tip_;
+  const FemParameters prm_;
+  const std::string output_dir_;
+  const std::function<void(const std::string&)> progress_;
+  const MPI_Comm comm_;
+  const unsigned rank_, n_ranks_;
+  const SymmetricTensor<4, dim> C_;
+  /// Width over which the 3D fields are integrated (1 m in 2D: the 2D fields are per width).
+  double width_ = 1;
+
+  parallel::distributed::Triangulation<dim> triangulation_;
+  FESystem<dim> fe_;
+  DoFHandler<dim> dof_handler_;
+  MappingQ1<dim> mapping_;
+  std::vector<double> x_lines_, z_lines_;
+  double dx_ = 0;
+
+  IndexSet owned_, relevant_;
+  std::vector<Node> nodes_; ///< sorted by x, then z
+  std::vector<double> x_st_, z_st_;
+  unsigned n_z_ = 1;
+  std::vector<double> node_zw_; ///< width weight of each z station (sum = width_)
+  std::vector<types::global_dof_index> load_top_, load_bottom_, support_;
+  /// Component and support point of each locally owned dof (by index within owned_), for the
+  /// rigid-body modes of the AMG near null space.
+  std::vector<std::array<double, 4>> owned_support_;
+
+  std::unique_ptr<CohesiveInterface> interface_;
+  std::vector<PointMap> point_map_;
+  std::vector<double> point_z_;
+  std::vector<Station> stations_;
+  std::vector<std::vector<unsigned>> segment_stations_; ///< x-station indices of a segment
+  std::vector<std::vector<unsigned>> segment_nodes_;    ///< node indices of a segment
+  std::vector<std::vector<unsigned>> segment_points_;
+  std::vector<bool> segment_mine_; ///< this rank assembles the segment
+  std::vector<unsigned> segment_of_left_station_;
+  unsigned tip_ = 0, notch_ = 0; ///< x-station indices
+
+  /// Bulk cell matrices: the mesh has few distinct cell shapes (a size per layer), so one
+  /// matrix per shape instead of one per cell or a reassembly per Newton step.
+  std::vector<FullMatrix<double>> shape_matrices_;
+  std::vector<unsigned> cell_shape_; ///< by active_cell_index, for locally owned cells
+
+  TrilinosWrappers::SparseMatrix jacobian_;
+  TrilinosWrappers::SparseMatrix factorized_matrix_; ///< the matrix the direct solver refers to
+  bool jacobian_is_factorized_ = false; ///< else GMRES preconditioned by the factorization
+  unsigned last_krylov_iterations_ = 0;
+  std::unique_ptr<TrilinosWrappers::SolverDirect> direct_;
+  SolverControl direct_control_;
+  TrilinosWrappers::PreconditionAMG amg_;
+  AffineConstraints<double> hom_;
+  unsigned epoch_ = 0, factorized_epoch_ = ~0u;
+  std::vector<double> factorized_tangents_, assembled_tangents_;
+  void factorize();
+  /// The direct solver as a preconditioner (exact inverse of the factorized Jacobian).
+  struct FactorizationPreconditioner {
+    TrilinosWrappers::SolverDirect* solver;
+    void vmult(Vec& dst, const Vec& src) const { solver->solve(dst, src); }
+  };
+
+  Vec u_, u_ghost_, scratch_ghost_;
+  double opening_ = 0;
+  double work_ = 0; ///< external work per width [J/m]
+  std::vector<std::pair<double, double>> path_;
+
+  law::SimulationResult result_;
+  DistributedRunInfo info_;
+  std::vector<double> dissipated_;
+  double max_opening_behind_tip_ = 0;
+  unsigned n_trials_ = 0, n_unstable_ = 0;
+  std::vector<std::pair<double, std::string>> pvd_records_;
+};
+
+// ---------------------------------------------------------------------------------------------
+
+template <int dim>
+DistributedDcbModel<dim>::DistributedDcbModel(
+    const law::Specimen& specimen, const law::Material& material, const law::TractionLaw& law,
+    double j_tip, const FemParameters& parameters, const std::string& output_dir,
+    const std::function<void(const std::string&)>& progress, MPI_Comm comm)
+    : specimen_(specimen), material_(material), user_law_(law), j_tip_(j_tip), prm_(parameters),
+      output_dir_(output_dir), progress_(progress), comm_(comm),
+      rank_(Utilities::MPI::this_mpi_process(comm)),
+      n_ranks_(Utilities::MPI::n_mpi_processes(comm)),
+      C_(orthotropic_stiffness<dim>(material, parameters)), triangulation_(comm),
+      fe_(FE_Q<dim>(parameters.degree), dim), dof_handler_(triangulation_) {
+  specimen_.validate();
+  material_.validate();
+  prm_.validate();
+  if (prm_.linear_solver == FemParameters::LinearSolver::umfpack)
+    throw InputError("FEM/Linear solver = umfpack: deal.II's UMFPACK is serial; the distributed "
+                     "engine takes mumps, klu or cg_amg");
+  if (!(j_tip > 0))
+    throw InputError("Cohesive law/J tip: the FEM tip criterion needs J tip > 0");
+  if (dim == 3)
+    width_ = specimen_.width;
+  law_ = &user_law_;
+  if (law.critical_opening() > 0 && law.rigid_at_zero_opening()) {
+    regularized_law_ = std::make_unique<ElasticRiseLaw>(law, prm_.rigid_law_stiffness_factor *
+                                                                 material.E_T / prm_.element_size);
+    law_ = regularized_law_.get();
+    result_.notes.push_back("rigid " + law.name() + " law regularized with an elastic rise to " +
+                            fmt(regularized_law_->delta_e() / units::mm) + " mm (area " +
+                            fmt(100 * (law_->area() / law.area() - 1), 3) + " %)");
+  }
+}
+
+template <int dim>
+double DistributedDcbModel<dim>::gsum(double local) const {
+  // Reduce on rank 0 and broadcast: every rank gets the same bits (an allreduce need not), so
+  // all ranks take the same branch in every test that uses the value.
+  double global = 0;
+  MPI_Reduce(&local, &global, 1, MPI_DOUBLE, MPI_SUM, 0, comm_);
+  MPI_Bcast(&global, 1, MPI_DOUBLE, 0, comm_);
+  return global;
+}
+
+template <int dim>
+double DistributedDcbModel<dim>::norm(const Vec& v) const {
+  double s = 0;
+  for (auto it = v.begin(); it != v.end(); ++it)
+    s += *it * *it;
+  return std::sqrt(gsum(s));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Setup
+
+template <int dim>
+void DistributedDcbModel<dim>::make_grid() {
+  const double L = specimen_.length, a0 = specimen_.initial_crack;
+  const double h = specimen_.arm_thickness();
+  // x and y lines exactly as the serial engine (one element per advance, graded heights).
+  const unsigned n_a0 = std::max(1u, unsigned(std::lround(a0 / prm_.element_size)));
+  dx_ = a0 / n_a0;
+  if (n_a0 < std::max(5u, prm_.tip_domain_elements + 1))
+    throw InputError("Specimen/Initial crack: the notch must span at least " +
+                     std::to_string(std::max(5u, prm_.tip_domain_elements + 1)) +
+                     " elements (the far-field J domain lies between load line and notch tip); "
+                     "reduce FEM/Element size");
+  const unsigned n_x = std::max(n_a0 + 1, unsigned(std::floor(L / dx_ + 1e-9)));
+  x_lines_.clear();
+  for (unsigned i = 0; i <= n_x; ++i)
+    x_lines_.push_back(std::min(L, i * dx_));
+  if (L - x_lines_.back() > 0.5 * dx_)
+    x_lines_.push_back(L);
+  else
+    x_lines_.back() = L;
+  std::vector<double> y_lines{0.0};
+  double size = dx_;
+  const double cap = h / prm_.min_layers;
+  while (y_lines.back() + size < h - 1e-12 * h) {
+    y_lines.push_back(y_lines.back() + size);
+    size = std::min(size * prm_.grading, cap);
+  }
+  const double rest = h - y_lines.back();
+  if (rest < 0.5 * size && y_lines.size() > 1)
+    y_lines.back() = h;
+  else
+    y_lines.push_back(h);
+  z_lines_ = {0.0};
+  if (dim == 3) {
+    const unsigned nz = prm_.width_elements > 0
+                            ? prm_.width_elements
+                            : std::max(1u, unsigned(std::lround(specimen_.width / dx_)));
+    for (unsigned k = 1; k <= nz; ++k)
+      z_lines_.push_back(specimen_.width * k / nz);
+  }
+
+  const unsigned nx = x_lines_.size() - 1, ny = y_lines.size() - 1;
+  const unsigned nzl = dim == 3 ? z_lines_.size() : 1; // vertex layers in z
+  std::vector<Point<dim>> vertices;
+  for (int side : {+1, -1}) // top arm, then the bottom arm with its own crack-plane vertices
+    for (unsigned k = 0; k < nzl; ++k)
+      for (unsigned j = 0; j <= ny; ++j)
+        for (unsigned i = 0; i <= nx; ++i) {
+          Point<dim> p;
+          p[0] = x_lines_[i];
+          p[1] = side * y_lines[j];
+          if (dim == 3)
+            p[dim - 1] = z_lines_[k];
+          vertices.push_back(p);
+        }
+  auto index = [&](unsigned arm, unsigned i, unsigned j, unsigned k) {
+    return arm * (nx + 1) * (ny + 1) * nzl + k * (nx + 1) * (ny + 1) + j * (nx + 1) + i;
+  };
+  std::vector<CellData<dim>> cells;
+  for (unsigned arm = 0; arm < 2; ++arm)
+    for (unsigned k = 0; k < (dim == 3 ? nzl - 1 : 1u); ++k) {
+      for (unsigned j = 0; j < ny; ++j)
+        for (unsigned i = 0; i < nx; ++i) {
+          CellData<dim> c;
+          // Lexicographic vertex order (x fastest, then y increasing, then z): the bottom arm
+          // counts j downwards, so its "lower" row is j + 1.
+          unsigned v = 0;
+          for (unsigned dz = 0; dz < (dim == 3 ? 2u : 1u); ++dz)
+            for (unsigned dy = 0; dy < 2; ++dy)
+              for (unsigned di = 0; di < 2; ++di) {
+                const unsigned jj = arm == 0 ? j + dy : j + 1 - dy;
+                c.vertices[v++] = index(arm, i + di, jj, k + dz);
+              }
+          c.material_id = arm; // 0 top, 1 bottom
+          cells.push_back(c);
+        }
+    }
+  triangulation_.create_triangulation(vertices, cells, SubCellData());
+}
+
+template <int dim>
+void DistributedDcbModel<dim>::setup_system() {
+  const auto t0 = Clock::now();
+  dof_handler_.distribute_dofs(fe_);
+  owned_ = dof_handler_.locally_owned_dofs();
+  IndexSet relevant;
+  DoFTools::extract_locally_relevant_dofs(dof_handler_, relevant);
+
+  // Crack-plane and load-line dofs of the owned cells, gathered on every rank:
+  // (kind 0 crack / 1 load, x, z, component, top?, dof) as doubles (dofs < 2^53).
+  const double tol = 1e-9 * specimen_.length;
+  const Quadrature<dim> support(fe_.get_unit_support_points());
+  FEValues<dim> fv(mapping_, fe_, support, update_quadrature_points);
+  std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
+  std::vector<double> mine;
+  owned_support_.assign(owned_.n_elements(), {{0, 0, 0, 0}});
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    if (!cell->is_locally_owned())
+      continue;
+    fv.reinit(cell);
+    cell->get_dof_indices(dofs);
+    const double top = cell->material_id() == 0 ? 1 : 0;
+    for (unsigned i = 0; i < dofs.size(); ++i) {
+      const auto& p = fv.quadrature_point(i);
+      const double c = fe_.system_to_component_index(i).first;
+      const double z = dim == 3 ? p[dim - 1] : 0.0;
+      if (owned_.is_element(dofs[i]))
+        owned_support_[owned_.index_within_set(dofs[i])] = {{c, p[0], p[1], z}};
+      if (std::abs(p[1]) < tol)
+        mine.insert(mine.end(), {0, p[0], z, c, top, double(dofs[i])});
+      if (std::abs(p[0]) < tol && c == 1)
+        mine.insert(mine.end(), {1, p[0], z, c, top, double(dofs[i])});
+    }
+  }
+  const auto all = Utilities::MPI::all_gather(comm_, mine);
+  auto key = [&](double v) { return std::llround(v / tol); };
+  std::map<std::pair<long long, long long>, Node> by_xz;
+  std::map<std::pair<long long, long long>, std::array<int, 2 * dim>> filled;
+  std::set<types::global_dof_index> load_top, load_bottom;
+  for (const auto& block : all)
+    for (std::size_t r = 0; r + 6 <= block.size(); r += 6) {
+      const auto dof = types::global_dof_index(std::llround(block[r + 5]));
+      const bool top = block[r + 4] > 0.5;
+      if (block[r] > 0.5) {
+        (top ? load_top : load_bottom).insert(dof);
+        continue;
+      }
+      const auto k = std::make_pair(key(block[r + 1]), key(block[r + 2]));
+      const unsigned c = unsigned(block[r + 3]);
+      auto& n = by_xz[k];
+      n.x = block[r + 1];
+      n.z = block[r + 2];
+      (top ? n.top : n.bottom)[c] = dof;
+      filled[k][(top ? 0 : dim) + c] = 1;
+    }
+  for (const auto& [k, f] : filled)
+    if (std::count(f.begin(), f.end(), 1) != 2 * dim)
+      throw ComputationError("FEM mesh: a crack-plane support point has no partner on the "
+                             "other arm (mesh generation error)");
+  nodes_.clear();
+  std::set<long long> xs, zs;
+  for (const auto& [k, n] : by_xz) {
+    nodes_.push_back(n);
+    xs.insert(k.first);
+    zs.insert(k.second);
+  }
+  n_z_ = zs.size();
+  x_st_.clear();
+  z_st_.clear();
+  for (unsigned a = 0; a < nodes_.size(); a += n_z_)
+    x_st_.push_back(nodes_[a].x);
+  for (unsigned b = 0; b < n_z_; ++b)
+    z_st_.push_back(nodes_[b].z);
+  if (nodes_.size() != xs.size() * zs.size())
+    throw ComputationError("FEM mesh: the crack-plane nodes do not form a grid in x and z");
+  load_top_.assign(load_top.begin(), load_top.end());
+  load_bottom_.assign(load_bottom.begin(), load_bottom.end());
+  // Rigid-body modes: the crack-plane line at x = L is held in x and y (in 2D that is the
+  // serial engine's point); in 3D its z = 0 end also in z. The load line fixes the rotations
+  // about x and z, the line the rotation about y. It carries no load under symmetric opening.
+  support_.clear();
+  for (unsigned iz = 0; iz < n_z_; ++iz) {
+    const auto& n = nodes_[node_index(x_st_.size() - 1, iz)];
+    support_.push_back(n.bottom[0]);
+    support_.push_back(n.bottom[1]);
+    if (dim == 3 && iz == 0)
+      support_.push_back(n.bottom[dim - 1]);
+  }
+
+  // Relevant = the usual ghosts + every crack-plane and load-line dof (small sets), so that
+  // every rank has every tie, load and support constraint and every crack-plane value.
+  std::vector<types::global_dof_index> special;
+  for (const auto& n : nodes_)
+    for (unsigned d = 0; d < dim; ++d) {
+      special.push_back(n.top[d]);
+      special.push_back(n.bottom[d]);
+    }
+  special.insert(special.end(), load_top_.begin(), load_top_.end());
+  special.insert(special.end(), load_bottom_.begin(), load_bottom_.end());
+  std::sort(special.begin(), special.end());
+  special.erase(std::unique(special.begin(), special.end()), special.end());
+  relevant_ = relevant;
+  relevant_.add_indices(special.begin(), special.end());
+  relevant_.compress();
+
+  // Sparsity: the couplings of every cell extended by the crack-plane partners of its dofs: the
+  // condensed matrix of ANY tie set then fits (see the serial engine), and the cohesive
+  // top-bottom couplings are contained.
+  std::unordered_map<types::global_dof_index, types::global_dof_index> partner;
+  for (const auto& n : nodes_)
+    for (unsigned d = 0; d < dim; ++d) {
+      partner[n.top[d]] = n.bottom[d];
+      partner[n.bottom[d]] = n.top[d];
+    }
+  DynamicSparsityPattern dsp(relevant_);
+  std::vector<types::global_dof_index> extended;
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    if (!cell->is_locally_owned())
+      continue;
+    cell->get_dof_indices(dofs);
+    extended = dofs;
+    for (const auto d : dofs) {
+      const auto it = partner.find(d);
+      if (it != partner.end())
+        extended.push_back(it->second);
+    }
+    std::sort(extended.begin(), extended.end());
+    for (const auto i : extended)
+      dsp.add_entries(i, extended.begin(), extended.end(), true);
+  }
+  SparsityTools::distribute_sparsity_pattern(dsp, owned_, comm_, relevant_);
+  jacobian_.reinit(owned_, owned_, dsp, comm_);
+  u_.reinit(owned_, comm_);
+  u_ghost_.reinit(owned_, relevant_, comm_);
+  scratch_ghost_.reinit(owned_, relevant_, comm_);
+
+  // Bulk cell matrices by cell shape (vertex offsets from vertex 0, rounded).
+  const QGauss<dim> quadrature(prm_.degree + 1);
+  FEValues<dim> fe_values(mapping_, fe_, quadrature, update_gradients | update_JxW_values);
+  const FEValuesExtractors::Vector displacement(0);
+  const unsigned n = fe_.n_dofs_per_cell();
+  std::map<std::vector<long long>, unsigned> shapes;
+  std::vector<SymmetricTensor<2, dim>> eps(n);
+  cell_shape_.assign(triangulation_.n_active_cells(), ~0u);
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    if (!cell->is_locally_owned())
+      continue;
+    std::vector<long long> k;
+    for (unsigned v = 1; v < cell->n_vertices(); ++v)
+      for (unsigned d = 0; d < dim; ++d)
+        k.push_back(key(cell->vertex(v)[d] - cell->vertex(0)[d]));
+    const auto it = shapes.find(k);
+    if (it != shapes.end()) {
+      cell_shape_[cell->active_cell_index()] = it->second;
+      continue;
+    }
+    fe_values.reinit(cell);
+    FullMatrix<double> m(n, n);
+    for (unsigned q = 0; q < quadrature.size(); ++q) {
+      for (unsigned i = 0; i < n; ++i)
+        eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+      for (unsigned i = 0; i < n; ++i) {
+        const SymmetricTensor<2, dim> sigma_i = C_ * eps[i];
+        for (unsigned j = 0; j <= i; ++j)
+          m(i, j) += sigma_i * eps[j] * fe_values.JxW(q);
+      }
+    }
+    for (unsigned i = 0; i < n; ++i)
+      for (unsigned j = 0; j < i; ++j)
+        m(j, i) = m(i, j);
+    shapes.emplace(k, shape_matrices_.size());
+    cell_shape_[cell->active_cell_index()] = shape_matrices_.size();
+    shape_matrices_.push_back(std::move(m));
+  }
+  make_interface();
+  info_.t_setup += seconds_since(t0);
+}
+
+template <int dim>
+void DistributedDcbModel<dim>::make_interface() {
+  const double tol = 1e-9 * specimen_.length;
+  interface_ = std::make_unique<CohesiveInterface>(*law_, prm_.contact_stiffness_factor *
+                                                              material_.E_T / prm_.element_size);
+  auto station_at = [&](const std::vector<double>& st, double v, const char* what) {
+    const auto it = std::lower_bound(st.begin(), st.end(), v - tol);
+    if (it == st.end() || std::abs(*it - v) > tol)
+      throw ComputationError(std::string("FEM mesh: no crack-plane node at ") + what + " = " +
+                             fmt(v));
+    return unsigned(it - st.begin());
+  };
+  // Lagrange basis over the node positions `pos` at v, and its derivative.
+  auto lagrange = [](const std::vector<double>& pos, double v, std::vector<double>& N,
+                     std::vector<double>& dN) {
+    N.assign(pos.size(), 1.0);
+    dN.assign(pos.size(), 0.0);
+    for (unsigned a = 0; a < pos.size(); ++a)
+      for (unsigned b = 0; b < pos.size(); ++b) {
+        if (b == a)
+          continue;
+        double term = 1 / (pos[a] - pos[b]);
+        for (unsigned c = 0; c < pos.size(); ++c)
+          if (c != a && c != b)
+            term *= (v - pos[c]) / (pos[a] - pos[c]);
+        dN[a] += term;
+        N[a] *= (v - pos[b]) / (pos[a] - pos[b]);
+      }
+  };
+  const QGaussLobatto<1> lobatto(prm_.degree + 1);
+  // z rule: per face across the width the nodal Lobatto rule (2D: one point of weight 1).
+  struct ZPoint {
+    double z, w;
+    std::vector<unsigned> iz;
+    std::vector<double> N;
+  };
+  std::vector<ZPoint> zpoints;
+  node_zw_.assign(n_z_, 0.0);
+  if (dim == 2) {
+    zpoints.push_back({0.0, 1.0, {0}, {1.0}});
+    node_zw_[0] = 1;
+  } else
+    for (unsigned k = 0; k + 1 < z_lines_.size(); ++k) {
+      const double len = z_lines_[k + 1] - z_lines_[k];
+      std::vector<unsigned> iz;
+      std::vector<double> pos;
+      for (unsigned q = 0; q < lobatto.size(); ++q) {
+        iz.push_back(station_at(z_st_, z_lines_[k] + lobatto.point(q)[0] * len, "z"));
+        pos.push_back(z_st_[iz.back()]);
+      }
+      for (unsigned q = 0; q < lobatto.size(); ++q) {
+        ZPoint zp;
+        zp.z = z_lines_[k] + lobatto.point(q)[0] * len;
+        zp.w = lobatto.weight(q) * len;
+        zp.iz = iz;
+        std::vector<double> dN;
+        lagrange(pos, zp.z, zp.N, dN);
+        node_zw_[iz[q]] += zp.w;
+        zpoints.push_back(zp);
+      }
+    }
+
+  const unsigned m = prm_.interface_subintervals;
+  segment_of_left_station_.assign(x_st_.size(), ~0u);
+  const IndexSet& owned = owned_;
+  for (unsigned f = 0; f + 1 < x_lines_.size(); ++f) {
+    const double xl = x_lines_[f], len = x_lines_[f + 1] - xl;
+    std::vector<unsigned> seg_st;
+    std::vector<double> pos;
+    for (unsigned q = 0; q < lobatto.size(); ++q) {
+      seg_st.push_back(station_at(x_st_, xl + lobatto.point(q)[0] * len, "x"));
+      pos.push_back(x_st_[seg_st.back()]);
+    }
+    std::vector<unsigned> seg_nodes;
+    for (const unsigned ix : seg_st)
+      for (unsigned iz = 0; iz < n_z_; ++iz)
+        seg_nodes.push_back(node_index(ix, iz));
+    // Composite Lobatto in x exactly as the serial engine (joints of sub-intervals merged).
+    std::vector<double> xs, ws;
+    for (unsigned i = 0; i < m; ++i)
+      for (unsigned q = 0; q < lobatto.size(); ++q) {
+        const double x = xl + (i + lobatto.point(q)[0]) / m * len;
+        const double w = lobatto.weight(q) * len / m;
+        if (!xs.empty() && std::abs(x - xs.back()) < tol)
+          ws.back() += w;
+        else {
+          xs.push_back(x);
+          ws.push_back(w);
+        }
+      }
+    std::vector<unsigned> pts;
+    std::vector<double> weights;
+    std::vector<double> Nx, dNx;
+    for (unsigned i = 0; i < xs.size(); ++i) {
+      lagrange(pos, xs[i], Nx, dNx);
+      Station station;
+      for (const auto& zp : zpoints) {
+        PointMap map;
+        for (unsigned a = 0; a < seg_st.size(); ++a)
+          for (unsigned c = 0; c < zp.iz.size(); ++c) {
+            const unsigned node = node_index(seg_st[a], zp.iz[c]);
+            map.nodes.push_back(node);
+            map.local.push_back(
+                unsigned(std::find(seg_nodes.begin(), seg_nodes.end(), node) - seg_nodes.begin()));
+            map.N.push_back(Nx[a] * zp.N[c]);
+            map.dN.push_back(dNx[a] * zp.N[c]);
+          }
+        point_map_.push_back(std::move(map));
+        point_z_.push_back(zp.z);
+        const unsigned p = interface_->add_point(xs[i]);
+        pts.push_back(p);
+        weights.push_back(ws[i] * zp.w);
+        station.points.push_back(p);
+        station.wz.push_back(zp.w);
+      }
+      stations_.push_back(std::move(station));
+    }
+    const unsigned s = interface_->add_segment(pts, weights);
+    segment_stations_.push_back(seg_st);
+    segment_nodes_.push_back(seg_nodes);
+    segment_points_.push_back(pts);
+    segment_mine_.push_back(owned.is_element(nodes_[seg_nodes.front()].top[1]));
+    segment_of_left_station_[seg_st.front()] = s;
+  }
+  notch_ = station_at(x_st_, specimen_.initial_crack, "x");
+  tip_ = notch_;
+  for (unsigned s = 0; s < interface_->n_segments(); ++s)
+    if (segment_stations_[s].back() <= notch_)
+      interface_->open_segment(s, SegmentState::traction_free);
+}
+
+template <int dim>
+void DistributedDcbModel<dim>::make_constraints(double opening,
+                                                AffineConstraints<double>& c) const {
+  c.clear();
+  c.reinit(relevant_);
+  for (unsigned ix = tip_; ix < x_st_.size(); ++ix)
+    for (unsigned iz = 0; iz < n_z_; ++iz)
+      for (unsigned d = 0; d < dim; ++d) {
+        const auto& n = nodes_[node_index(ix, iz)];
+        c.add_line(n.top[d]);
+        c.add_entry(n.top[d], n.bottom[d], 1.0);
+      }
+  for (const auto d : load_top_) {
+    c.add_line(d);
+    c.set_inhomogeneity(d, 0.5 * opening);
+  }
+  for (const auto d : load_bottom_) {
+    c.add_line(d);
+    c.set_inhomogeneity(d, -0.5 * opening);
+  }
+  for (const auto d : support_)
+    c.add_line(d);
+  c.close();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Algebra
+
+template <int dim>
+void DistributedDcbModel<dim>::assemble_residual(const Vec& u, Vec& r, Vec& r_full) {
+  // r = the condensed residual (ties moved to their partners, prescribed rows dropped), r_full
+  // the plain one (its load-line rows are the reactions). Same quantities as the serial engine.
+  const auto t0 = Clock::now();
+  scratch_ghost_ = u;
+  r = 0;
+  r_full = 0;
+  const unsigned n = fe_.n_dofs_per_cell();
+  std::vector<types::global_dof_index> dofs(n);
+  Vector<double> u_cell(n), f(n);
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    if (!cell->is_locally_owned())
+      continue;
+    cell->get_dof_indices(dofs);
+    cell->get_dof_values(scratch_ghost_, u_cell);
+    shape_matrices_[cell_shape_[cell->active_cell_index()]].vmult(f, u_cell);
+    hom_.distribute_local_to_global(f, dofs, r);
+    r_full.add(dofs, f);
+  }
+  // Interface forces of the opened segments this rank assembles.
+  for (unsigned s = 0; s < interface_->n_segments(); ++s) {
+    if (!segment_mine_[s] || interface_->state(s) == SegmentState::intact)
+      continue;
+    const auto& sn = segment_nodes_[s];
+    std::vector<types::global_dof_index> sd(2 * sn.size());
+    for (unsigned a = 0; a < sn.size(); ++a) {
+      sd[a] = nodes_[sn[a]].top[1];
+      sd[sn.size() + a] = nodes_[sn[a]].bottom[1];
+    }
+    Vector<double> fl(sd.size());
+    bool any = false;
+    for (const unsigned p : segment_points_[s]) {
+      const auto& map = point_map_[p];
+      double o = 0;
+      for (unsigned a = 0; a < map.nodes.size(); ++a)
+        o += map.N[a] * (scratch_ghost_[nodes_[map.nodes[a]].top[1]] -
+                         scratch_ghost_[nodes_[map.nodes[a]].bottom[1]]);
+      const double force = interface_->respond(p, o).force;
+      if (force == 0)
+        continue;
+      any = true;
+      for (unsigned a = 0; a < map.nodes.size(); ++a) {
+        fl[map.local[a]] += map.N[a] * force;
+        fl[sn.size() + map.local[a]] -= map.N[a] * force;
+      }
+    }
+    if (any) {
+      hom_.distribute_local_to_global(fl, sd, r);
+      r_full.add(sd, fl);
+    }
+  }
+  r.compress(VectorOperation::add);
+  r_full.compress(VectorOperation::add);
+  info_.t_assemble += seconds_since(t0);
+}
+
+template <int dim>
+void DistributedDcbModel<dim>::update_jacobian() {
+  // Tangents of all interface points (identical on every rank). The Jacobian changes only
+  // when they or the ties change.
+  const bool amg = prm_.linear_solver == FemParameters::LinearSolver::cg_amg;
+  const auto o = openings();
+  std::vector<double> tangents(point_map_.size());
+  for (unsigned p = 0; p < point_map_.size(); ++p) {
+    const auto resp = interface_->respond(p, o[p]);
+    tangents[p] = resp.stiffness;
+    // CG needs an SPD matrix: a softening point enters with its secant (>= 0) instead of its
+    // negative tangent. The residual stays exact, so Newton converges to the same state, as a
+    // quasi-Newton (more iterations near the peak of the law).
+    if (amg && tangents[p] < 0)
+      tangents[p] = o[p] > 0 ? std::max(0.0, resp.force / o[p]) : 0.0;
+  }
+  if (factorized_epoch_ == epoch_ && tangents == assembled_tangents_)
+    return;
+  const auto t0 = Clock::now();
+  jacobian_ = 0;
+  const unsigned n = fe_.n_dofs_per_cell();
+  std::vector<types::global_dof_index> dofs(n);
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    if (!cell->is_locally_owned())
+      continue;
+    cell->get_dof_indices(dofs);
+    hom_.distribute_local_to_global(shape_matrices_[cell_shape_[cell->active_cell_index()]], dofs,
+                                    jacobian_);
+  }
+  for (unsigned s = 0; s < interface_->n_segments(); ++s) {
+    if (!segment_mine_[s] || interface_->state(s) == SegmentState::intact)
+      continue;
+    const auto& sn = segment_nodes_[s];
+    const unsigned ns = sn.size();
+    std::vector<types::global_dof_index> sd(2 * ns);
+    for (unsigned a = 0; a < ns; ++a) {
+      sd[a] = nodes_[sn[a]].top[1];
+      sd[ns + a] = nodes_[sn[a]].bottom[1];
+    }
+    FullMatrix<double> kl(2 * ns, 2 * ns);
+    bool any = false;
+    for (const unsigned p : segment_points_[s]) {
+      if (tangents[p] == 0)
+        continue;
+      any = true;
+      const auto& map = point_map_[p];
+      for (unsigned a = 0; a < map.nodes.size(); ++a)
+        for (unsigned b = 0; b < map.nodes.size(); ++b) {
+          const double k = tangents[p] * map.N[a] * map.N[b];
+          const unsigned la = map.local[a], lb = map.local[b];
+          kl(la, lb) += k;
+          kl(la, ns + lb) -= k;
+          kl(ns + la, lb) -= k;
+          kl(ns + la, ns + lb) += k;
+        }
+    }
+    if (any)
+      hom_.distribute_local_to_global(kl, sd, jacobian_);
+  }
+  jacobian_.compress(VectorOperation::add);
+  info_.t_assemble += seconds_since(t0);
+  const bool same_space = factorized_epoch_ == epoch_;
+  assembled_tangents_ = tangents;
+  jacobian_is_factorized_ = tangents == factorized_tangents_ && same_space;
+  // A release changes the constrained space: always refactorize. Otherwise keep the old
+  // factorization as GMRES preconditioner while that converges fast (direct solvers only).
+  if (!same_space || amg || last_krylov_iterations_ > 20)
+    factorize();
+}
+
+template <int dim>
+void DistributedDcbModel<dim>::factorize() {
+  const bool amg = prm_.linear_solver == FemParameters::LinearSolver::cg_amg;
+  const auto t1 = Clock::now();
+  if (amg) {
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic = true;
+    data.higher_order_elements = prm_.degree > 1;
+    data.smoother_sweeps = 2;
+    data.aggregation_threshold = 0.02;
+    DoFTools::extract_constant_modes(dof_handler_, ComponentMask(dim, true), data.constant_modes);
+    // Near null space: all rigid-body modes, translations AND rotations. With translations only
+    // (what AdditionalData::constant_modes can express) the coarse levels cannot represent the
+    // bending of the slender arms and CG slows down with the mesh (measured: 0.39 s per solve at
+    // 14 640 DoFs, 5.2 s at 65 340). ML takes the modes as a pre-computed null space; the
+    // coordinates are centred on the beam for conditioning.
+    Teuchos::ParameterList list;
+    std::unique_ptr<Epetra_MultiVector> translations;
+    data.set_parameters(list, translations, jacobian_);
+    const unsigned n_modes = dim == 2 ? 3 : 6;
+    Epetra_MultiVector modes(jacobian_.trilinos_matrix().DomainMap(), int(n_modes));
+    const double xc[3] = {0.5 * specimen_.length, 0.0, 0.5 * (dim == 3 ? specimen_.width : 0.0)};
+    for (unsigned k = 0; k < owned_support_.size(); ++k) {
+      const auto& sp = owned_support_[k];
+      const unsigned c = unsigned(sp[0]);
+      const double x[3] = {sp[1] - xc[0], sp[2] - xc[1], sp[3] - xc[2]};
+      for (unsigned m = 0; m < dim; ++m)
+        modes[m][k] = c == m ? 1.0 : 0.0;
+      // Rotations: u = omega x r; 2D only about z.
+      if (dim == 2)
+        modes[2][k] = c == 0 ? -x[1] : x[0];
+      else {
+        modes[3][k] = c == 1 ? -x[2] : (c == 2 ? x[1] : 0.0); // about x
+        modes[4][k] = c == 0 ? x[2] : (c == 2 ? -x[0] : 0.0); // about y
+        modes[5][k] = c == 0 ? -x[1] : (c == 1 ? x[0] : 0.0); // about z
+      }
+    }
+    list.set("null space: type", "pre-computed");
+    list.set("null space: dimension", int(n_modes));
+    list.set("null space: vectors", modes.Values());
+    amg_.initialize(jacobian_, list);
+  } else {
+    direct_.reset(); // it refers to factorized_matrix_: destroy it before the matrix changes
+    factorized_matrix_.copy_from(jacobian_);
+    direct_ = std::make_unique<TrilinosWrappers::SolverDirect>(
+        direct_control_,
+        TrilinosWrappers::SolverDirect::AdditionalData(
+            false, prm_.linear_solver == FemParameters::LinearSolver::mumps ? "Amesos_Mumps"
+                                                                            : "Amesos_Klu"));
+    direct_->initialize(factorized_matrix_); // symbolic and numeric factorization
+  }
+  factorized_tangents_ = assembled_tangents_;
+  factorized_epoch_ = epoch_;
+  jacobian_is_factorized_ = true;
+  last_krylov_iterations_ = 0;
+  ++info_.n_factorizations;
+  info_.t_factorize += seconds_since(t1);
+}
+
+template <int dim>
+void DistributedDcbModel<dim>::solve_linear(const Vec& rhs, Vec& x) {
+  const auto t0 = Clock::now();
+  if (prm_.linear_solver == FemParameters::LinearSolver::cg_amg) {
+    SolverControl control(20000, prm_.linear_tolerance * norm(rhs));
+    SolverCG<Vec> cg(control);
+    x = 0;
+    try {
+      cg.solve(jacobian_, x, rhs, amg_);
+    } catch (const std::exception&) {
+      throw ComputationError("FEM/Linear solver = cg_amg: CG did not reach the Linear "
+                             "tolerance in " +
+                             std::to_string(control.last_step()) + " iterations (residual " +
+                             fmt(control.last_value()) + "); use mumps");
+    }
+  } else if (jacobian_is_factorized_)
+    direct_->solve(x, rhs);
+  else {
+    // The current Jacobian = factorized one + the branch changes since: GMRES with the old
+    // factorization as (exact-inverse) preconditioner. 1e-12 of the right-hand side makes the
+    // step as exact as a direct solve for the Newton test (1e-9 of the reaction).
+    const double tol = 1e-12 * norm(rhs);
+    SolverControl control(40, tol);
+    SolverGMRES<Vec> gmres(control, typename SolverGMRES<Vec>::AdditionalData(42, true));
+    x = 0;
+    bool ok = true;
+    try {
+      gmres.solve(jacobian_, x, rhs, FactorizationPreconditioner{direct_.get()});
+    } catch (const std::exception&) {
+      ok = false;
+    }
+    last_krylov_iterations_ = control.last_step();
+    info_.n_linear_solves += control.last_step();
+    if (!ok) { // many branch changes: a fresh factorization is the cheaper way
+      factorize();
+      direct_->solve(x, rhs);
+    }
+  }
+  ++info_.n_linear_solves;
+  info_.t_solve += seconds_since(t0);
+}
+
+template <int dim>
+void DistributedDcbModel<dim>::predict(double opening) {
+  if (opening_ != 0)
+    u_ *= opening / opening_;
+  opening_ = opening;
+  AffineConstraints<double> constraints;
+  make_constraints(opening, constraints);
+  constraints.distribute(u_);
+}
+
+template <int dim>
+double DistributedDcbModel<dim>::reaction_norm(const Vec& r_full) const {
+  double s = 0;
+  for (const auto d : load_top_)
+    if (owned_.is_element(d))
+      s += r_full[d] * r_full[d];
+  for (const auto d : load_bottom_)
+    if (owned_.is_element(d))
+      s += r_full[d] * r_full[d];
+  return std::max(std::sqrt(gsum(s)), 1e-6 * j_tip_ * width_);
+}
+
+template <int dim>
+bool DistributedDcbModel<dim>::newton(double opening, std::string& diagnosis) {
+  predict(opening);
+  Vec r(owned_, comm_), rf(owned_, comm_), du(owned_, comm_), trial(owned_, comm_),
+      rhs(owned_, comm_);
+  assemble_residual(u_, r, rf);
+  double ref = reaction_norm(rf);
+  double nrm = norm(r);
+  for (unsigned it = 0; it <= prm_.max_newton_iterations; ++it) {
+    if (nrm <= prm_.newton_tolerance * ref)
+      return true;
+    if (it == prm_.max_newton_iterations)
+      break;
+    ++info_.n_newton;
+    sync();
+    update_jacobian();
+    rhs = r;
+    rhs *= -1.0;
+    solve_linear(rhs, du);
+    hom_.distribute(du);
+
+    // Backtracking line search on the condensed residual norm (as the serial engine).
+    double alpha = 1, best_alpha = 0, best_norm = nrm, best_ref = ref;
+    for (int ls = 0; ls < 8; ++ls, alpha *= 0.5) {
+      trial = u_;
+      trial.add(alpha, du);
+      assemble_residual(trial, r, rf);
+      const double trial_ref = reaction_norm(rf);
+      const double trial_norm = norm(r);
+      if (trial_norm < best_norm) {
+        best_norm = trial_norm;
+        best_alpha = alpha;
+        best_ref = trial_ref;
+      }
+      if (trial_norm <= (1 - 1e-4 * alpha) * nrm)
+        break;
+    }
+    if (best_alpha == 0) {
+      diagnosis = "line search found no decrease of the residual " + fmt(nrm) + " N";
+      return false;
+    }
+    u_.add(best_alpha, du);
+    assemble_residual(u_, r, rf);
+    ref = best_ref;
+    nrm = norm(r);
+  }
+  diagnosis = "no convergence in " + std::to_string(prm_.max_newton_iterations) +
+              " Newton iterations (residual " + fmt(nrm / ref) + " of the reaction, tolerance " +
+              fmt(prm_.newton_tolerance) + ")";
+  return false;
+}
+
+template <int dim>
+bool DistributedDcbModel<dim>::kinsol(double opening, std::string& diagnosis) {
+  // SUNDIALS KINSOL on TrilinosWrappers::MPI::Vector (its N_Vector wrapper reduces over the
+  // vectors' communicator): the serial engine's setup, on the same condensed residual, Jacobian
+  // and linear solves as newton(). The release library does not report a failed solve
+  // (notes/dealii-9.4.md): the result is re-checked against the Newton test here.
+  predict(opening);
+  Vec r(owned_, comm_), rf(owned_, comm_);
+  assemble_residual(u_, r, rf);
+  const double ref = reaction_norm(rf);
+  if (norm(r) <= prm_.newton_tolerance * ref)
+    return true;
+  using Kinsol = SUNDIALS::KINSOL<Vec>;
+  typename Kinsol::AdditionalData data;
+  data.strategy = Kinsol::AdditionalData::linesearch;
+  data.maximum_non_linear_iterations = prm_.max_newton_iterations;
+  // Max-norm stop below tolerance / sqrt(n) guarantees the l2 test; the step tolerance stops
+  // only on stagnation (see the serial engine).
+  data.function_tolerance = prm_.newton_tolerance * ref / std::sqrt(double(dof_handler_.n_dofs()));
+  data.step_tolerance = 1e-3 * prm_.newton_tolerance * opening;
+  data.maximum_setup_calls = 1;
+  Kinsol solver(data, comm_);
+  std::string callback_error;
+  auto guarded = [&](const auto& body) -> int {
+    try {
+      body();
+      return 0;
+    } catch (const std::exception& e) {
+      callback_error = e.what();
+      return -1;
+    }
+  };
+  solver.reinit_vector = [&](Vec& v) { v.reinit(owned_, comm_); };
+  solver.residual = [&](const Vec& u, Vec& f) {
+    return guarded([&] {
+      Vec full(owned_, comm_);
+      assemble_residual(u, f, full);
+    });
+  };
+  solver.setup_jacobian = [&](const Vec& u, const Vec&) {
+    return guarded([&] {
+      u_ = u; // update_jacobian() linearizes at u_
+      sync();
+      update_jacobian();
+    });
+  };
+  solver.solve_with_jacobian = [&](const Vec& rhs, Vec& x, double) {
+    return guarded([&] {
+      solve_linear(rhs, x);
+      hom_.distribute(x); // tied dofs follow their partners
+    });
+  };
+  Vec solution = u_;
+  unsigned iterations = 0;
+  try {
+    iterations = solver.solve(solution);
+  } catch (const std::exception& e) {
+    callback_error = e.what();
+  }
+  info_.n_newton += iterations;
+  u_ = solution;
+  assemble_residual(u_, r, rf);
+  const double final_ref = reaction_norm(rf);
+  const double nrm = norm(r);
+  if (callback_error.empty() && nrm <= prm_.newton_tolerance * final_ref)
+    return true;
+  diagnosis = "KINSOL returned after " + std::to_string(iterations) + " of at most " +
+              std::to_string(prm_.max_newton_iterations) + " Newton iterations with residual " +
+              fmt(nrm / final_ref) + " of the reaction (tolerance " + fmt(prm_.newton_tolerance) +
+              ")" +
+              (callback_error.empty() ? "" : "; KINSOL or a callback failed: " + callback_error);
+  return false;
+}
+
+template <int dim>
+void DistributedDcbModel<dim>::solve_at(double target) {
+  const Vec u0 = u_;
+  const double opening0 = opening_;
+  unsigned n =
+      std::max(1u, unsigned(std::ceil(std::abs(target - opening0) / prm_.max_opening_increment)));
+  std::string diagnosis;
+  const int attempts = target == opening0 ? 1 : 6;
+  for (int attempt = 0; attempt < attempts; ++attempt, n *= 2) {
+    u_ = u0;
+    opening_ = opening0;
+    bool ok = true;
+    for (unsigned i = 1; i <= n && ok; ++i)
+      ok = prm_.nonlinear_solver == FemParameters::NonlinearSolver::kinsol
+               ? kinsol(opening0 + (target - opening0) * double(i) / n, diagnosis)
+               : newton(opening0 + (target - opening0) * double(i) / n, diagnosis);
+    if (ok) {
+      sync();
+      return;
+    }
+  }
+  std::ostringstream m;
+  m << "FEM: no equilibrium at load-point opening " << target / units::mm << " mm with the tip at "
+    << x_st_[tip_] / units::mm << " mm";
+  if (target == opening0)
+    m << " (re-solve at fixed opening after a release)";
+  else
+    m << " (" << n / 2 << " sub-steps from " << opening0 / units::mm << " mm)";
+  m << ": " << diagnosis
+    << ". Try a smaller FEM/Element size or Maximum opening increment, a softer Contact "
+       "stiffness factor, more Maximum Newton iterations, or check the law for a vertical drop";
+  throw ComputationError(m.str());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Crack growth (the serial engine's algorithm)
+
+template <int dim>
+bool DistributedDcbModel<dim>::load_to_critical() {
+  auto t0 = Clock::now();
+  double J = tip_j();
+  info_.t_j += seconds_since(t0);
+  if (J >= (1 - prm_.tip_tolerance) * j_tip_) {
+    if (J > (1 + prm_.tip_tolerance) * j_tip_)
+      ++n_unstable_;
+    return false;
+  }
+  const double target = std::sqrt(j_tip_);
+  struct Sample {
+    double opening, root_j;
+  };
+  Sample lo{opening_, std::sqrt(std::max(J, 0.0))}, hi{0, 0};
+  bool have_hi = false;
+  double next;
+  const auto& rc = result_.rcurve;
+  const std::size_t n = rc.size();
+  if (n >= 3)
+    next = 3 * rc[n - 1].load_point_opening - 3 * rc[n - 2].load_point_opening +
+           rc[n - 3].load_point_opening;
+  else if (n == 2)
+    next = 2 * rc[1].load_point_opening - rc[0].load_point_opening;
+  else if (J > 0)
+    next = opening_ * target / lo.root_j;
+  else
+    next = law::cbt_opening(
+        specimen_, material_,
+        law::cbt_load_at_crack_length(specimen_, material_, j_tip_, specimen_.initial_crack),
+        specimen_.initial_crack);
+  for (int it = 0; it < 40; ++it) {
+    if (have_hi && !(next > lo.opening && next < hi.opening))
+      next = 0.5 * (lo.opening + hi.opening);
+    if (!have_hi && !(next > lo.opening))
+      next = 1.1 * lo.opening;
+    solve_at(next);
+    ++n_trials_;
+    t0 = Clock::now();
+    J = tip_j();
+    info_.t_j += seconds_since(t0);
+    path_.emplace_back(opening_, load_per_width());
+    if (std::abs(J / j_tip_ - 1) <= prm_.tip_tolerance)
+      return true;
+    const Sample s{opening_, std::sqrt(std::max(J, 0.0))};
+    if (J < j_tip_)
+      lo = s;
+    else {
+      hi = s;
+      have_hi = true;
+    }
+    if (have_hi)
+      next =
+          lo.opening + (target - lo.root_j) * (hi.opening - lo.opening) / (hi.root_j - lo.root_j);
+    else
+      next = s.root_j > 0 ? opening_ * target / s.root_j : 2 * opening_;
+  }
+  throw ComputationError("FEM: could not bring the tip J to J_tip = " + fmt(j_tip_) +
+                         " J/m^2 with the tip at " + fmt(x_st_[tip_] / units::mm) + " mm (last J " +
+                         fmt(J) + ", opening " + fmt(opening_ / units::mm) +
+                         " mm): tip J is not monotonic in the opening here");
+}
+
+template <int dim>
+void DistributedDcbModel<dim>::release_tip() {
+  // The row of faces ahead of the tip (the whole width) becomes a fresh cohesive segment.
+  const unsigned s = segment_of_left_station_[tip_];
+  if (s == ~0u)
+    throw ComputationError("FEM: the crack reached the end of the crack plane");
+  interface_->open_segment(s, SegmentState::cohesive);
+  tip_ = segment_stations_[s].back();
+  make_constraints(0.0, hom_);
+  ++epoch_;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Measurements
+
+template <int dim>
+std::vector<double> DistributedDcbModel<dim>::node_openings() const {
+  std::vector<double> o(nodes_.size());
+  for (unsigned a = 0; a < nodes_.size(); ++a)
+    o[a] = u_ghost_[nodes_[a].top[1]] - u_ghost_[nodes_[a].bottom[1]];
+  return o;
+}
+
+template <int dim>
+std::vector<double> DistributedDcbModel<dim>::openings() const {
+  const auto nodal = node_openings();
+  std::vector<double> o(point_map_.size(), 0.0);
+  for (unsigned p = 0; p < point_map_.size(); ++p)
+    for (unsigned a = 0; a < point_map_[p].nodes.size(); ++a)
+      o[p] += point_map_[p].N[a] * nodal[point_map_[p].nodes[a]];
+  return o;
+}
+
+template <int dim>
+double DistributedDcbModel<dim>::station_opening(unsigned ix,
+                                                 const std::vector<double>& nodal) const {
+  // Width average of the nodal openings at x-station ix (2D: the opening).
+  double s = 0;
+  for (unsigned iz = 0; iz < n_z_; ++iz)
+    s += node_zw_[iz] * nodal[node_index(ix, iz)];
+  return s / width_;
+}
+
+template <int dim>
+double DistributedDcbModel<dim>::domain_j(const Ramp& q, bool crack_face_term) const {
+  // J B = int_V (sigma_i1 u_i,1 - W) q,1 dV + int_faces sigma_coh d(delta)/dx q dA (Moran & Shih;
+  // q = q(x) across the whole width, so in 3D this is the width average of J along a straight
+  // front). Divided by the width: per unit width, as the serial engine's 2D J.
+  const QGauss<dim> quadrature(prm_.degree + 1);
+  FEValues<dim> fe_values(mapping_, fe_, quadrature,
+                          update_gradients | update_JxW_values | update_quadrature_points);
+  const FEValuesExtractors::Vector displacement(0);
+  std::vector<Tensor<2, dim>> grad(quadrature.size());
+  double J = 0;
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    if (!cell->is_locally_owned())
+      continue;
+    const double xa = cell->vertex(0)[0], xb = cell->vertex(1)[0];
+    if (xb <= q.x0 || xa >= q.x3 || (xa >= q.x1 && xb <= q.x2))
+      continue;
+    fe_values.reinit(cell);
+    fe_values[displacement].get_function_gradients(u_ghost_, grad);
+    for (unsigned k = 0; k < quadrature.size(); ++k) {
+      const double dq = q.slope(fe_values.quadrature_point(k)[0]);
+      if (dq == 0)
+        continue;
+      const SymmetricTensor<2, dim> eps = symmetrize(grad[k]);
+      const SymmetricTensor<2, dim> sigma = C_ * eps;
+      const double W = 0.5 * (sigma * eps);
+      double t = -W;
+      for (unsigned i = 0; i < dim; ++i)
+        t += sigma[i][0] * grad[k][i][0];
+      J += t * dq * fe_values.JxW(k);
+    }
+  }
+  J = gsum(J) / width_;
+  if (crack_face_term)
+    J += crack_face_j(&q);
+  return J;
+}
+
+template <int dim>
+double DistributedDcbModel<dim>::crack_face_j(const Ramp* ramp) const {
+  double J = 0;
+  const auto o = openings();
+  const auto nodal = node_openings();
+  for (unsigned s = 0; s < interface_->n_segments(); ++s) {
+    if (interface_->state(s) == SegmentState::intact)
+      continue;
+    const auto& pts = interface_->segment_points(s);
+    const auto& w = interface_->segment_weights(s);
+    if (ramp && (interface_->x(pts.back()) <= ramp->x0 || interface_->x(pts.front()) >= ramp->x3))
+      continue;
+    for (unsigned j = 0; j < pts.size(); ++j) {
+      const auto& map = point_map_[pts[j]];
+      double slope = 0;
+      for (unsigned a = 0; a < map.nodes.size(); ++a)
+        slope += map.dN[a] * nodal[map.nodes[a]];
+      const double xj = interface_->x(pts[j]);
+      J += w[j] * interface_->segment_traction(s, j, o[pts[j]]) * slope *
+           (ramp ? ramp->value(xj) : 1.0);
+    }
+  }
+  return J / width_;
+}
+
+template <int dim>
+double DistributedDcbModel<dim>::tip_j() const {
+  const double x = x_st_[tip_];
+  const double r = prm_.tip_domain_elements * dx_;
+  const double p = std::max(1u, prm_.tip_domain_elements / 2) * dx_;
+  return domain_j({x - r, x - p, x + p, x + r}, true);
+}
+
+template <int dim>
+double DistributedDcbModel<dim>::far_field_j() const {
+  const double a0 = specimen_.initial_crack, h = specimen_.arm_thickness();
+  auto snap = [&](double x) { return std::round(x / dx_) * dx_; };
+  const double x2 = x_st_[tip_] + prm_.tip_domain_elements * dx_;
+  return domain_j({snap(0.2 * a0), snap(0.8 * a0), x2, std::min(snap(x2 + h), x_lines_.back())},
+                  false);
+}
+
+template <int dim>
+double DistributedDcbModel<dim>::bulk_energy() const {
+  const unsigned n = fe_.n_dofs_per_cell();
+  Vector<double> u_cell(n), f(n);
+  double U = 0;
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    if (!cell->is_locally_owned())
+      continue;
+    cell->get_dof_values(u_ghost_, u_cell);
+    U += 0.5 * shape_matrices_[cell_shape_[cell->active_cell_index()]].matrix_norm_square(u_cell);
+  }
+  return gsum(U) / width_;
+}
+
+template <int dim>
+double DistributedDcbModel<dim>::stored_energy() const {
+  return bulk_energy() +
+         (interface_->recoverable_energy(openings()) + interface_->dissipated_energy()) / width_;
+}
+
+template <int dim>
+double DistributedDcbModel<dim>::load_per_width() {
+  Vec r(owned_, comm_), rf(owned_, comm_);
+  assemble_residual(u_, r, rf);
+  double P = 0;
+  for (const auto d : load_top_)
+    if (owned_.is_element(d))
+      P += rf[d];
+  return gsum(P) / width_;
+}
+
+template <int dim>
+law::RCurvePoint DistributedDcbModel<dim>::record_advance() {
+  const auto o = openings();
+  interface_->commit(o);
+  law::RCurvePoint pt;
+  const double B = specimen_.width;
+  const double x_tip = x_st_[tip_];
+  pt.a = x_tip;
+  const auto nodal = node_openings();
+
+  // Notch root as in the serial engine, on stations (x positions of the interface points; in
+  // 3D their width averages: opening, and failed when the width-averaged delta_max passed
+  // delta_c). In 2D a station is one point and this is the serial rule.
+  const double dc = law_->critical_opening();
+  if (dc <= 0) {
+    pt.root = x_tip;
+    pt.delta_root = 0;
+  } else {
+    const unsigned ns = stations_.size();
+    std::vector<double> sx(ns), so(ns);
+    int last_failed = -1;
+    for (unsigned k = 0; k < ns; ++k) {
+      const auto& st = stations_[k];
+      double wsum = 0, osum = 0, dsum = 0;
+      for (unsigned j = 0; j < st.points.size(); ++j) {
+        wsum += st.wz[j];
+        osum += st.wz[j] * o[st.points[j]];
+        dsum += st.wz[j] * interface_->delta_max(st.points[j]);
+      }
+      sx[k] = interface_->x(st.points[0]);
+      so[k] = osum / wsum;
+      if (interface_->is_cohesive(st.points[0]) && dsum / wsum >= dc)
+        last_failed = int(k);
+    }
+    if (last_failed < 0) {
+      pt.root = x_st_[notch_];
+      pt.delta_root = station_opening(notch_, nodal);
+    } else {
+      const unsigned f = unsigned(last_failed);
+      unsigned n = f + 1;
+      while (n + 1 < ns && !(sx[n] > sx[f]))
+        ++n;
+      const double df = so[f], dn = so[n];
+      pt.root = (df > dn && dn < dc && df >= dc) ? sx[f] + (df - dc) / (df - dn) * (sx[n] - sx[f])
+                                                 : sx[n];
+      pt.delta_root = dc;
+    }
+  }
+  pt.zone_length = x_tip - pt.root;
+  if (tip_ > 0)
+    max_opening_behind_tip_ = std::max(max_opening_behind_tip_, station_opening(tip_ - 1, nodal));
+
+  auto t0 = Clock::now();
+  pt.J_tip = tip_j();
+  pt.J_ff = far_field_j();
+  info_.t_j += seconds_since(t0);
+  pt.R_J = pt.J_ff - 0.5 * pt.delta_root * law_->envelope(pt.delta_root);
+  pt.R_eq2 = law::r_curve_eq2(*law_, j_tip_, pt.delta_root);
+
+  const double P = load_per_width();
+  pt.load = P * B;
+  pt.load_point_opening = opening_;
+  path_.erase(
+      std::remove_if(path_.begin(), path_.end(), [&](const auto& s) { return s.first > opening_; }),
+      path_.end());
+  path_.emplace_back(opening_, P);
+  std::sort(path_.begin(), path_.end());
+  for (std::size_t i = 1; i < path_.size(); ++i)
+    work_ += 0.5 * (path_[i].second + path_[i - 1].second) * (path_[i].first - path_[i - 1].first);
+  path_.clear();
+  const double U = bulk_energy();
+  const double U_zone = interface_->recoverable_energy(o) / width_;
+  pt.external_work = work_ * B;
+  pt.strain_energy = U * B;
+  pt.zone_recoverable = U_zone * B;
+  const double dissipated = work_ - U - U_zone;
+  pt.dissipated = dissipated * B;
+  if (!result_.rcurve.empty())
+    pt.R_energy = (dissipated - dissipated_.back()) / (x_tip - result_.rcurve.back().a);
+  dissipated_.push_back(dissipated);
+  return pt;
+}
+
+template <int dim>
+bool DistributedDcbModel<dim>::reached_steady_state(double first_root_move) {
+  const auto& rc = result_.rcurve;
+  const auto& pt = rc.back();
+  if (pt.a - first_root_move < prm_.steady_state_window)
+    return false;
+  double lo = pt.R_J, hi = pt.R_J;
+  std::size_t i0 = rc.size() - 1;
+  while (i0 > 0 && pt.a - rc[i0 - 1].a <= prm_.steady_state_window * (1 + 1e-9)) {
+    --i0;
+    lo = std::min(lo, rc[i0].R_J);
+    hi = std::max(hi, rc[i0].R_J);
+  }
+  if (hi - lo > prm_.plateau_tolerance * std::abs(pt.R_J))
+    return false;
+  result_.reached_steady_state = true;
+  double sum = 0;
+  for (std::size_t i = i0; i < rc.size(); ++i)
+    sum += rc[i].R_J;
+  result_.G_ss = sum / double(rc.size() - i0);
+  const double g_energy = (dissipated_.back() - dissipated_[i0]) / (pt.a - rc[i0].a);
+  result_.notes.push_back("steady state at a = " + fmt(pt.a / units::mm) + " mm: R_J spread " +
+                          fmt(100 * (hi - lo) / pt.R_J, 3) + " % over the last " +
+                          fmt((pt.a - rc[i0].a) / units::mm) +
+                          " mm; G_ss = mean R_J there; R_energy over the window (dissipation "
+                          "per growth) " +
+                          fmt(g_energy) + " J/m^2");
+  return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Output
+
+template <int dim>
+void DistributedDcbModel<dim>::output_fields(unsigned advance) {
+  if (output_dir_.empty())
+    return;
+  const auto t0 = Clock::now();
+  DataOut<dim> data_out;
+  data_out.attach_dof_handler(dof_handler_);
+  const std::vector<DataComponentInterpretation::DataComponentInterpretation> vector_field(
+      dim, DataComponentInterpretation::component_is_part_of_vector);
+  data_out.add_data_vector(u_ghost_, std::vector<std::string>(dim, "displacement_m"),
+                           DataOut<dim>::type_dof_data, vector_field);
+  const StressPostprocessor<dim> stress(C_);
+  data_out.add_data_vector(u_ghost_, stress);
+  Vector<float> subdomain(triangulation_.n_active_cells());
+  for (auto& s : subdomain)
+    s = float(triangulation_.locally_owned_subdomain());
+  data_out.add_data_vector(subdomain, "rank");
+  data_out.build_patches(mapping_, prm_.degree);
+  // One .vtu piece per rank and a .pvtu record (collective); rank 0 keeps the .pvd series with
+  // the crack-tip position in mm as its time axis.
+  const std::string pvtu =
+      data_out.write_vtu_with_pvtu_record(output_dir_ + "/", "fem_dcb", advance, comm_, 4);
+  pvd_records_.emplace_back(x_st_[tip_] / units::mm, pvtu);
+  if (rank_ == 0) {
+    std::ofstream pvd(output_dir_ + "/fem_dcb.pvd");
+    DataOutBase::write_pvd_record(pvd, pvd_records_);
+  }
+  info_.t_output += seconds_since(t0);
+}
+
+template <int dim>
+void DistributedDcbModel<dim>::write_interface_csv() const {
+  if (output_dir_.empty() || rank_ != 0)
+    return;
+  std::vector<std::string> header{"x_mm", "opening_mm", "traction_kPa", "delta_max_mm", "state"};
+  if (dim == 3)
+    header.insert(header.begin() + 1, "z_mm");
+  CsvWriter w(output_dir_ + "/fem_interface.csv", header,
+              {"fiberbridge fem (distributed engine, " + std::to_string(dim) +
+                   "D): crack-plane interface at the end of the run, one row per integration "
+                   "point (x from the load line" +
+                   std::string(dim == 3 ? ", z across the width" : "") + ")",
+               "state: 0 tied (intact ligament), 1 traction-free (sawn notch), 2 cohesive, "
+               "3 failed (opening past delta_c: traction-free, contact only)"});
+  const auto o = openings();
+  for (unsigned seg = 0; seg < interface_->n_segments(); ++seg) {
+    const auto state = interface_->state(seg);
+    for (const unsigned p : interface_->segment_points(seg)) {
+      double code = 0;
+      if (state == SegmentState::traction_free)
+        code = 1;
+      else if (state == SegmentState::cohesive)
+        code = interface_->has_failed(p) ? 3 : 2;
+      const double traction =
+          state == SegmentState::intact ? 0.0 : interface_->respond(p, o[p]).traction;
+      std::vector<double> row{interface_->x(p) / units::mm, o[p] / units::mm, traction / units::kPa,
+                              interface_->delta_max(p) / units::mm, code};
+      if (dim == 3)
+        row.insert(row.begin() + 1, point_z_[p] / units::mm);
+      w.row(row);
+    }
+  }
+  w.close();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The algorithm (as DcbModel::run)
+
+template <int dim>
+law::SimulationResult DistributedDcbModel<dim>::run() {
+  const auto start = Clock::now();
+  result_.model = "fem";
+  make_grid();
+  setup_system();
+  make_constraints(0.0, hom_);
+  result_.n_dofs_or_particles = long(dof_handler_.n_dofs());
+  info_.n_ranks = n_ranks_;
+  info_.dimension = dim;
+  info_.n_dofs = long(dof_handler_.n_dofs());
+  info_.n_cells = long(triangulation_.n_global_active_cells());
+  if (!output_dir_.empty() && rank_ == 0)
+    std::filesystem::create_directories(output_dir_);
+  MPI_Barrier(comm_);
+  report("fem (distributed, " + std::to_string(dim) + "D, " + std::to_string(n_ranks_) +
+         " MPI ranks): " + std::to_string(info_.n_cells) + " cells, " +
+         std::to_string(info_.n_dofs) + " dofs, Q" + std::to_string(prm_.degree) + ", element " +
+         fmt(dx_ / units::mm) + " mm" +
+         (dim == 3 ? ", " + std::to_string(z_lines_.size() - 1) + " layers across the width"
+                   : std::string()));
+
+  const double L = specimen_.length, h = specimen_.arm_thickness();
+  const double a0 = specimen_.initial_crack;
+  double first_root_move = -1;
+  unsigned advance = 0;
+  path_.emplace_back(0.0, 0.0);
+  while (true) {
+    if (x_st_[tip_] + prm_.tip_domain_elements * dx_ + h > L + 1e-9 * L) {
+      if (result_.rcurve.empty())
+        throw InputError(
+            "Specimen: the ligament (Length - Initial crack = " + fmt((L - a0) / units::mm) +
+            " mm) is shorter than the J domains ahead of the tip need (tip strip + one arm "
+            "thickness = " +
+            fmt((prm_.tip_domain_elements * dx_ + h) / units::mm) + " mm)");
+      if (first_root_move < 0)
+        result_.notes.push_back(
+            "no steady state: zone longer than ligament (the notch root never moved; the tip "
+            "reached " +
+            fmt(x_st_[tip_] / units::mm) + " mm)");
+      else
+        result_.notes.push_back("no steady state: R_J did not settle within " +
+                                fmt(prm_.steady_state_window / units::mm) +
+                                " mm before the ligament ran out");
+      break;
+    }
+    load_to_critical();
+    const law::RCurvePoint pt = record_advance();
+    result_.rcurve.push_back(pt);
+    if (first_root_move < 0 && pt.root > a0 + 1e-9 * L)
+      first_root_move = pt.a;
+    if (advance % 10 == 0)
+      report("fem: a = " + fmt(pt.a / units::mm) + " mm, root " + fmt(pt.root / units::mm) +
+             " mm, opening " + fmt(pt.load_point_opening / units::mm) + " mm, load " +
+             fmt(pt.load) + " N, J_tip " + fmt(pt.J_tip) + ", R_J " + fmt(pt.R_J) + " J/m^2");
+    if (first_root_move >= 0 && reached_steady_state(first_root_move))
+      break;
+    ++advance;
+    if (prm_.output_every > 0 && advance % prm_.output_every == 0)
+      output_fields(advance);
+    release_tip();
+    solve_at(opening_);
+    interface_->commit(openings());
+    path_.emplace_back(opening_, load_per_width());
+  }
+  output_fields(advance + 1);
+  write_interface_csv();
+
+  const auto kinks = law_->kinks();
+  const double rise = kinks.size() > 1 ? kinks[1] : law_->critical_opening();
+  if (rise > 0 && max_opening_behind_tip_ > rise)
+    result_.notes.push_back(
+        "resolution: the opening one element behind the tip reached " +
+        fmt(max_opening_behind_tip_ / units::mm) + " mm, past the law's first linear branch (" +
+        fmt(rise / units::mm) +
+        " mm): the traction varies strongly within the tip element; if R_J falls below Eq. 2, "
+        "refine FEM/Element size or raise FEM/Interface sub-intervals");
+  if (dim == 3 && !material_.plane_stress)
+    result_.notes.push_back("Material/Plane = strain is not used in 3D: the solid with free "
+                            "side faces decides the out-of-plane state");
+
+  Utilities::System::MemoryStats stats;
+  Utilities::System::get_memory_stats(stats);
+  const double mb = double(stats.VmHWM) / 1024.0;
+  info_.peak_memory_MB_sum = gsum(mb);
+  info_.peak_memory_MB_max = Utilities::MPI::max(mb, comm_);
+  result_.wall_time_s = seconds_since(start);
+  // The wall time of rank 0 is the run's (all ranks end together at the last collective).
+  MPI_Bcast(&result_.wall_time_s, 1, MPI_DOUBLE, 0, comm_);
+  const char* solver_name = prm_.linear_solver == FemParameters::LinearSolver::mumps
+                                ? "Trilinos Amesos MUMPS (distributed)"
+                            : prm_.linear_solver == FemParameters::LinearSolver::klu
+                                ? "Trilinos Amesos KLU (gathered on one rank)"
+                                : "CG + Trilinos ML AMG on the secant (SPD) Jacobian";
+  result_.method.push_back(
+      "distributed engine: " + std::to_string(dim) + "D, " + std::to_string(n_ranks_) +
+      " MPI ranks, parallel::distributed::Triangulation (p4est), Trilinos MPI matrices, " +
+      solver_name +
+      (prm_.nonlinear_solver == FemParameters::NonlinearSolver::kinsol
+           ? ", SUNDIALS KINSOL with line search on MPI vectors"
+           : ", own Newton with line search"));
+  result_.method.push_back(
+      "tip criterion: domain J over a full-height strip of +-" +
+      std::to_string(prm_.tip_domain_elements) +
+      " elements (q = 1 on the inner half) with the cohesive crack-face term" +
+      (dim == 3 ? ", over the whole width (width-averaged J of a straight through-width front)"
+                : "") +
+      "; J_ff: domain J with q = 1 over the whole zone");
+  result_.notes.push_back(std::to_string(n_unstable_) +
+                          " advances at fixed load-point opening (tip J above J_tip after a "
+                          "release: unstable growth)");
+  result_.method.push_back(
+      "time " + fmt(result_.wall_time_s, 3) + " s: setup " + fmt(info_.t_setup, 3) + " s, " +
+      std::to_string(n_trials_) + " equilibrium solves, " + std::to_string(info_.n_newton) +
+      " Newton iterations, " + std::to_string(info_.n_factorizations) +
+      " Jacobian factorizations " + fmt(info_.t_factorize, 3) + " s, " +
+      std::to_string(info_.n_linear_solves) + " solves " + fmt(info_.t_solve, 3) + " s, assembly " +
+      fmt(info_.t_assemble, 3) + " s, J integrals " + fmt(info_.t_j, 3) + " s, output " +
+      fmt(info_.t_output, 3) + " s; peak memory " + fmt(info_.peak_memory_MB_sum, 4) +
+      " MB over all ranks");
+  report("fem: done, " + std::to_string(result_.rcurve.size()) + " advances in " +
+         fmt(result_.wall_time_s, 3) + " s");
+  return result_;
+}
+
+template <int dim>
+law::SimulationResult run_distributed(const law::Specimen& specimen, const law::Material& material,
+                                      const law::TractionLaw& law, double j_tip,
+                                      const FemParameters& parameters,
+                                      const std::string& output_dir,
+                                      const std::function<void(const std::string&)>& progress,
+                                      MPI_Comm comm, DistributedRunInfo& info) {
+  DistributedDcbModel<dim> model(specimen, material, law, j_tip, parameters, output_dir, progress,
+                                 comm);
+  auto result = model.run();
+  info = model.info();
+  return result;
+}
+
+} // namespace fiberbridge::fem::distributed

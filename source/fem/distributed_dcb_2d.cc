@@ -1,0 +1,13 @@
+// The 2D instantiation of the distributed engine (a translation unit of its own: each takes
+// about a minute to compile, and the two compile in parallel).
+#include "distributed_dcb.templates.h"
+
+namespace fiberbridge::fem::distributed {
+
+template law::SimulationResult run_distributed<2>(const law::Specimen&, const law::Material&,
+                                                  const law::TractionLaw&, double,
+                                                  const FemParameters&, const std::string&,
+                                                  const std::function<void(const std::string&)>&,
+                                                  MPI_Comm, DistributedRunInfo&);
+
+} // namespace fiberbridge::fem::distributed
