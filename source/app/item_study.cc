@@ -122,7 +122,7 @@ struct Case {
   std::string name;
   std::string description;
   std::vector<std::string> sets;
-  std::string only_model; ///< non-empty: the case concerns this model only
+  std::string only_model = {}; ///< non-empty: the case concerns this model only
 };
 
 /// DESIGN.md section 3 "Stability on stiff and extreme cases".

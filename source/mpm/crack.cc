@@ -40,7 +40,10 @@ void Crack::advance(double x_new, double ux, double uy) {
 void Crack::update_tractions() {
   for (std::size_t k = 0; k < segments_.size(); ++k) {
     CrackSegment& s = segments_[k];
-    s.opening = 0.5 * (particles_[k].opening() + particles_[k + 1].opening());
+    const double opening = 0.5 * (particles_[k].opening() + particles_[k + 1].opening());
+    // The traction of the last step acted while the opening moved from s.opening to opening.
+    traction_work_ += s.traction * (opening - s.opening) * (particles_[k + 1].X - particles_[k].X);
+    s.opening = opening;
     if (!s.bridged || s.failed) {
       s.traction = 0;
       continue;

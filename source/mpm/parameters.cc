@@ -34,6 +34,7 @@ void MpmParameters::validate() const {
   require(end_ligament >= 0, "End ligament", "must be >= 0 (mm)");
   require(steady_growth >= 0, "Steady growth", "must be >= 0 (mm)");
   require(max_steps > 0, "Maximum steps", "must be positive");
+  require(threads >= 1 && threads <= 256, "Threads", "must lie in [1, 256]");
   require(vtu_every_advances >= 0, "VTU every advances", "must be >= 0");
 }
 

@@ -58,12 +58,13 @@ TEST(MpmDcb, StationaryCrackJIsPathIndependentAndEnergyBalances) {
   const double j_ff = model.far_field_j();
   EXPECT_NEAR(j_tip / j_ff, 1.0, 0.04) << "J_tip " << j_tip << ", J_ff " << j_ff;
 
-  // Energy: work of the loading block = strain + kinetic energy + PIC damping loss, to the
-  // explicit scheme's accuracy (measured 4e-3 of the work).
+  // Energy: work of the loading block = strain + kinetic energy + PIC damping loss + numerical
+  // loss of the explicit update, to the scheme's higher-order remainder.
   const double W = solver.external_work();
-  const double balance =
-      W - solver.strain_energy() - solver.kinetic_energy() - solver.damping_loss();
-  EXPECT_LT(std::fabs(balance), 0.01 * W);
+  const double balance = W - solver.strain_energy() - solver.kinetic_energy() -
+                         solver.damping_loss() - solver.numerical_loss();
+  // Measured 1.5e-4 of the work (4e-3 before the numerical loss was counted).
+  EXPECT_LT(std::fabs(balance), 0.002 * W);
 
   // Compliance against corrected beam theory. The crack's end lies one cell ahead of the last
   // split node column (Crack::splits), where the partly split cell separates the material:
@@ -76,6 +77,29 @@ TEST(MpmDcb, StationaryCrackJIsPathIndependentAndEnergyBalances) {
   EXPECT_LT(solver.kinetic_energy(), 0.01 * solver.strain_energy());
   std::printf("stationary: J_tip/J_ff %.4f, balance %.2e W, P/P_cbt %.4f\n", j_tip / j_ff,
               balance / W, model.load() / P_cbt);
+}
+
+TEST(MpmDcb, ParallelParticleLoopsGiveTheSameResponse) {
+  // Two threads split the scatter to the grid into coloured blocks of particle columns (and,
+  // without OpenMP, still run that blocked path serially): only the order of the sums changes.
+  const law::Specimen s = small_specimen();
+  const law::Material m;
+  const auto law = law::make_linear_softening(1e6, 0.2e-3);
+  MpmParameters p = coarse();
+  DcbModel serial(s, m, law, 200, p);
+  p.threads = 2;
+  DcbModel parallel(s, m, law, 200, p);
+  const double T = 3 * serial.vibration_period();
+  while (serial.solver().time() < T) {
+    ASSERT_TRUE(serial.step(true));
+    ASSERT_TRUE(parallel.step(true));
+  }
+  const double U = serial.solver().strain_energy();
+  EXPECT_GT(U, 0);
+  EXPECT_NEAR(parallel.solver().strain_energy(), U, 1e-9 * U);
+  EXPECT_NEAR(parallel.load(), serial.load(), 1e-9 * std::fabs(serial.load()));
+  EXPECT_NEAR(parallel.tip_j(), serial.tip_j(), 1e-6 * std::fabs(serial.tip_j()));
+  EXPECT_EQ(parallel.crack().tip(), serial.crack().tip());
 }
 
 TEST(MpmDcb, RejectsUnusableInput) {
@@ -200,20 +224,24 @@ TEST(MpmDcbPropagation, LefmGrowthCriterionStabilityAndEnergyRelease) {
               mean(load_ratio), standard_error(load_ratio), mean(jff), standard_error(jff),
               mean(ren), standard_error(ren), f);
 
-  // Energy is never created, and the explicit update can lose at most what the tip releases:
-  // 0 <= W - U - K - U_zone - D <= J_tip B (a - a0). The residual is the numerical dissipation
-  // of the advances beyond the PIC blend's own loss (D): measured about 40 % of the released
-  // energy, printed below. It is released energy all the same (R_energy counts it).
+  // Energy balance: W = U + K + U_zone + D at every advance, D = PIC damping loss + numerical
+  // loss of the explicit update (ExplicitSolver::numerical_loss, computed from the grid and
+  // particle velocity increments and the strain increments, not from the energies). Without
+  // that term 42 % of the released energy was missing: it leaves within 50 steps of each
+  // advance (measured), where the cut's unbalanced stress acts on light node fields. With it the
+  // residual is the explicit scheme's higher-order remainder: measured 2.3e-4 of the work.
   const double B = run.specimen.width;
-  double residual = 0;
+  double residual = 0, numerical = 0;
   for (const auto& p : r.rcurve) {
     residual =
         p.external_work - p.strain_energy - p.kinetic_energy - p.zone_recoverable - p.dissipated;
-    EXPECT_GT(residual, -0.005 * p.external_work);
-    EXPECT_LT(residual, J * B * (p.a - run.specimen.initial_crack));
+    EXPECT_LT(std::fabs(residual), 0.005 * p.external_work) << "a = " << p.a;
   }
-  std::printf("lefm: energy residual %.3f of J_tip B (a - a0)\n",
-              residual / (J * B * (r.rcurve.back().a - run.specimen.initial_crack)));
+  numerical = r.rcurve.back().dissipated; // LEFM: no zone; damping + numerical loss
+  std::printf("lefm: energy residual %.2e of W; tip losses (damping + numerical) %.3f of J_tip B "
+              "(a - a0)\n",
+              residual / r.rcurve.back().external_work,
+              numerical / (J * B * (r.rcurve.back().a - run.specimen.initial_crack)));
 }
 
 TEST(MpmDcbPropagation, LinearSofteningZoneDevelopsAndReachesSteadyState) {
@@ -238,6 +266,17 @@ TEST(MpmDcbPropagation, LinearSofteningZoneDevelopsAndReachesSteadyState) {
   EXPECT_TRUE(r.reached_steady_state);
   std::printf("linear: G_ss %.1f (law %.1f), rdelta error %.3f\n", r.G_ss, G_ss,
               r.rdelta_rel_error_vs_eq2);
+  // Energy balance with a zone: the residual W - U - K - U_zone - D is the law's work that the
+  // tractions never paid: a segment born at an advance starts at half the tip particle's
+  // opening (the partly split tip cell, see the notes), and its law energy counts from zero.
+  // Measured -0.9 % of the work (-0.0075 J, 3.7 J/m^2 per unit growth); 1.5 % bounds it, and a
+  // positive residual (energy lost outside the ledger) is held to the LEFM level.
+  for (const auto& p : r.rcurve) {
+    const double residual =
+        p.external_work - p.strain_energy - p.kinetic_energy - p.zone_recoverable - p.dissipated;
+    EXPECT_GT(residual, -0.015 * p.external_work) << "a = " << p.a;
+    EXPECT_LT(residual, 0.005 * p.external_work) << "a = " << p.a;
+  }
   // The zone dissipates: at the end the dissipation exceeds J_c over the failed length.
   const auto& last = r.rcurve.back();
   EXPECT_GT(last.dissipated,
@@ -245,15 +284,24 @@ TEST(MpmDcbPropagation, LinearSofteningZoneDevelopsAndReachesSteadyState) {
 }
 
 // Targets of the bridging run: R_J plateaus at J_tip + J_c (seed Eq. 1 and 2) and follows
-// Eq. 2 while the zone develops. Disabled: at 4 cells per arm the measured plateau is 267.6 J/m^2
-// against 299.5 (-10.6 %) and R_J deviates from Eq. 2 by 8.8 % (relative L2) during the
-// development. Cause (see the notes of the result): the segment at the tip reads the elastic
-// stretch of the tip cell between its two node rows as opening (0.016 mm here, 8 % of delta_c),
-// and the tip J, taken around the tip, counts it as traction-free; the law's work over it
-// (~16 J/m^2 for this law) is paid out of J_tip instead of adding to it, and the growth step of
-// a cell costs the tip part about 6 % as in the LEFM run. The error scales with the near-tip
-// stretch over a cell relative to delta_c, so it is largest for this short law; the tolerances
-// below are the ones the method should meet once the tip segment is fixed.
+// Eq. 2 while the zone develops. Disabled: at 4 cells per arm the measured plateau is 281.6 J/m^2
+// against 299.5 (-6.0 %) and R_J deviates from Eq. 2 by 5.2 % (relative L2) during the
+// development (it was -10.6 % and 8.8 % before the tip J subtracted the law's work over the tip
+// crack particle's opening). What is left, measured: (a) the one-cell growth step, as in the
+// LEFM run (J_ff at growth 0.96 J_tip): -8 J/m^2; (b) the tip cell is only partly split, so
+// the tip crack particle reads the elastic stretch between the node rows as opening (0.016 mm,
+// 8 % of delta_c); a segment born at the next advance starts at half of it and its law work
+// from zero is never paid by the tractions (3.7 J/m^2 per unit growth: the energy residual of
+// LinearSofteningZoneDevelopsAndReachesSteadyState); (c) J_ff at the advances scatters by
+// +-6 % with the arm's ringing (time-averaged J_ff - zone work = tip J within 2-3 %). Tried
+// and measured: crack openings from the particles' displacements extrapolated to the plane
+// instead of the field velocities (-7.7 %; not kept), J_ff averaged over the growth window
+// (-7.5 %; not kept), and a segment's law counted from its opening at birth (-4.9 %, Eq. 2
+// 4.5 %: inside the bounds by 0.1 %, and the energy residual closes to 3e-4 of the work, but it
+// contradicts the tip J's subtraction, which assumes the law works from zero opening at the tip;
+// without that subtraction it gave -9.5 %; not kept). The tolerances below are the ones the
+// method should meet once the tip cell is resolved (e.g. a tip that moves with the split
+// column).
 TEST(MpmDcbPropagation, DISABLED_LinearSofteningPlateauAndDevelopmentMatchEq2) {
   const auto& r = linear_run().result;
   const double G_ss = 200 + 0.5 * 1e6 * 0.2e-3 - 0.5 * 1e6 * 0.005 * 0.2e-3; // elastic rise

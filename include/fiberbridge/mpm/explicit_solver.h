@@ -38,6 +38,9 @@ public:
   void set_crack(Crack* crack) { crack_ = crack; }
   std::vector<VelocityConstraint>& constraints() { return constraints_; }
   std::vector<ParticleForce>& particle_forces() { return particle_forces_; }
+  /// Threads of the particle loops (OpenMP builds; 1 = serial). Results do not depend on it
+  /// beyond the summation order of the PIC damping loss.
+  void set_threads(int n) { threads_ = n > 1 ? n : 1; }
   /// Changes the PIC damping fraction (tests switch damping off to watch free vibration).
   void set_pic_fraction(double beta) { beta_ = beta; }
 
@@ -57,6 +60,9 @@ public:
   /// blend (kinetic energy of the FLIP update minus that of the blended velocity).
   double external_work() const { return external_work_; }
   double damping_loss() const { return damping_loss_; }
+  /// Energy the explicit update itself loses (derivation in grid_to_particles): small while the
+  /// fields are smooth, large right after a tip advance, where an MPM tip releases its energy.
+  double numerical_loss() const { return numerical_loss_; }
   double kinetic_energy() const;
   double strain_energy() const;
   /// Strain energy density of particle p [J/m^3].
@@ -76,6 +82,9 @@ private:
     double S, gx, gy;
   };
   void particles_to_grid();
+  /// Adds the mass, momentum, mass-weighted displacement and internal force of particles
+  /// [begin, end) to their links' fields.
+  void scatter(long begin, long end);
   void update_grid();
   void contact();
   void apply_constraints();
@@ -89,10 +98,12 @@ private:
   Crack* crack_ = nullptr;
   std::vector<VelocityConstraint> constraints_;
   std::vector<ParticleForce> particle_forces_;
-  std::vector<Link> links_; ///< 9 per particle
+  std::vector<Link> links_;       ///< 9 per particle
+  std::vector<int> first_column_; ///< lowest node column each particle touches (this step)
+  int threads_ = 1;
   double time_ = 0;
   long steps_ = 0;
-  double external_work_ = 0, damping_loss_ = 0;
+  double external_work_ = 0, damping_loss_ = 0, numerical_loss_ = 0;
   double wave_speed_;
 };
 
