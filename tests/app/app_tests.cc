@@ -178,7 +178,8 @@ TEST(Scenes, DefaultSceneRuns) {
   GTEST_SKIP() << "the default scene runs the FEM and the MPM; not built (FIBERBRIDGE_MODELS)";
 #endif
   const auto r =
-      run("default_scene", "run " + source("prm/default.prm") + " --set \"Output directory=out\"");
+      run("default_scene", "run " + source("prm/default.prm") +
+                               " --set \"Output directory=out\" --set \"MPM/Threads=1\"");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = read_json(work("default_scene") / "out" / "summary.json");
   EXPECT_TRUE(j.contains("trilinear"));
