@@ -7,6 +7,7 @@
 #include "fiberbridge/fem/distributed_dcb.h"
 #include "fiberbridge/law/exponential_law.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
+#include "test_cases.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -20,17 +21,10 @@ using namespace fiberbridge;
 using units::kPa;
 using units::mm;
 
-namespace {
+using fem_test::pva_control;
+using fem_test::short_dcb;
 
-law::PiecewiseLinearLaw pva_control() {
-  law::TrilinearParameters t;
-  t.d1 = 0.1 * mm;
-  t.s1 = 661 * kPa;
-  t.d2 = 1.0 * mm;
-  t.s2 = 187 * kPa;
-  t.dc = 6 * mm;
-  return law::make_trilinear(t);
-}
+namespace {
 
 /// A trilinear law short enough for the short DCB to reach steady state (the PVA zone, ~120 mm
 /// on the seed specimen, is longer than its ligament): G_ss = 200 + 337.5 J/m^2.
@@ -42,16 +36,6 @@ law::PiecewiseLinearLaw short_trilinear() {
   t.s2 = 300 * kPa;
   t.dc = 1.5 * mm;
   return law::make_trilinear(t);
-}
-
-/// The short DCB of fem_tests (120 x 20 x 20 mm, a0 40 mm).
-law::Specimen short_dcb() {
-  law::Specimen s;
-  s.length = 0.120;
-  s.width = 0.020;
-  s.height = 0.020;
-  s.initial_crack = 0.040;
-  return s;
 }
 
 unsigned world_size() {

@@ -6,6 +6,7 @@
 #include "fiberbridge/fem/dcb_simulation.h"
 #include "fiberbridge/law/exponential_law.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
+#include "test_cases.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -21,27 +22,10 @@ using namespace fiberbridge;
 using units::kPa;
 using units::mm;
 
+using fem_test::pva_control;
+using fem_test::short_dcb;
+
 namespace {
-
-law::PiecewiseLinearLaw pva_control() {
-  law::TrilinearParameters t;
-  t.d1 = 0.1 * mm;
-  t.s1 = 661 * kPa;
-  t.d2 = 1.0 * mm;
-  t.s2 = 187 * kPa;
-  t.dc = 6 * mm;
-  return law::make_trilinear(t);
-}
-
-/// A short DCB (120 x 20 x 20 mm, a0 40 mm) that the tests run in about a second.
-law::Specimen short_dcb() {
-  law::Specimen s;
-  s.length = 0.120;
-  s.width = 0.020;
-  s.height = 0.020;
-  s.initial_crack = 0.040;
-  return s;
-}
 
 void print(const law::SimulationResult& r) {
   std::cout << "  a_mm root_mm delta_root_mm load_N J_tip J_ff R_J R_eq2 R_energy\n";
