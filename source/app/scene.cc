@@ -104,19 +104,29 @@ void apply_override(dealii::ParameterHandler& prm, const std::string& o) {
     prm.leave_subsection();
 }
 
-/// deal.II's exception text is many lines; keep the line that says what was wrong.
+/// deal.II's exception text is many lines (where in deal.II, the violated condition, then the
+/// "Additional information" that says what was wrong in the user's file); keep the last part.
 std::string condense(const std::string& what) {
   std::stringstream in(what);
   std::string line, best;
+  bool in_info = false, have_info = what.find("Additional information") != std::string::npos;
   while (std::getline(in, line)) {
     const auto b = line.find_first_not_of(" \t");
     if (b == std::string::npos)
       continue;
     line = line.substr(b);
-    if (line.rfind("---", 0) == 0 || line.rfind("An error occurred", 0) == 0 ||
-        line.rfind("Additional information", 0) == 0 || line.rfind("The violated", 0) == 0 ||
-        line.rfind("Stacktrace", 0) == 0 || line.rfind("#", 0) == 0 ||
-        line.find("in function") != std::string::npos)
+    if (line.rfind("Additional information", 0) == 0) {
+      in_info = true;
+      continue;
+    }
+    if (line.rfind("---", 0) == 0 || line.rfind("Stacktrace", 0) == 0) {
+      in_info = false;
+      continue;
+    }
+    if (have_info
+            ? !in_info
+            : (line.rfind("An error occurred", 0) == 0 || line.rfind("The violated", 0) == 0 ||
+               line.rfind("#", 0) == 0 || line.find("in function") != std::string::npos))
       continue;
     best += (best.empty() ? "" : " ") + line;
     if (best.size() > 300)

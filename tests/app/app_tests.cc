@@ -106,6 +106,14 @@ TEST(BadInput, UnknownSceneKey) {
   expect_clean_failure("unknown_key", "run " + data("unknown_key.prm"), "Smoothing halfwidth");
 }
 
+TEST(BadInput, UnknownSceneSectionNamesLineAndSection) {
+  // deal.II's own text (function signature, violated condition) must not be what the user reads.
+  expect_clean_failure("unknown_section", "run " + data("unknown_section.prm"), "Line <3> of file");
+  const auto r = run("unknown_section", "run " + data("unknown_section.prm"));
+  EXPECT_NE(r.err.find("no such subsection to be entered: Beamm"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("ParameterHandler::"), std::string::npos) << r.err;
+}
+
 TEST(BadInput, UnknownCommandAndOption) {
   EXPECT_NE(run("unknown_cmd", "frobnicate").exit_code, 0);
   EXPECT_NE(run("unknown_opt", "extract x.csv --no-such-option").exit_code, 0);
