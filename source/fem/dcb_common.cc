@@ -5,6 +5,8 @@
 
 #include <deal.II/lac/full_matrix.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -74,31 +76,95 @@ SymmetricTensor<4, 3> orthotropic_stiffness<3>(const law::Material& m, const Fem
   return T;
 }
 
-ElasticRiseLaw::ElasticRiseLaw(const law::TractionLaw& base, double k) : base_(base) {
-  delta_e_ = base.envelope(0) / k;
-  for (int i = 0; i < 20; ++i) // fixed point of delta_e = sigma(delta_e)/k (sigma decreasing)
-    delta_e_ = base.envelope(delta_e_) / k;
-  sigma_e_ = base.envelope(delta_e_);
-  const auto kinks = base.kinks();
-  const double first = kinks.size() > 1 ? kinks[1] : base.critical_opening();
-  if (!(delta_e_ > 0 && delta_e_ < 0.5 * first))
-    throw InputError("FEM/Rigid law stiffness factor: the elastic rise of the " + base.name() +
-                     " law would reach " + fmt(delta_e_ / units::mm) +
+const law::TractionLaw* insertable_law(const law::TractionLaw& law, const law::Material& material,
+                                       const FemParameters& p,
+                                       std::unique_ptr<law::ElasticRiseLaw>& holder,
+                                       std::vector<std::string>& notes) {
+  if (!(law.critical_opening() > 0 && law.rigid_at_zero_opening()))
+    return &law;
+  const double delta_e = law::ElasticRiseLaw::rise_end_for_slope(
+      law, p.rigid_law_stiffness_factor * material.E_T / p.element_size);
+  const auto kinks = law.kinks();
+  const double first = kinks.size() > 1 ? kinks[1] : law.critical_opening();
+  if (!(delta_e > 0 && delta_e < 0.5 * first))
+    throw InputError("FEM/Rigid law stiffness factor: the elastic rise of the " + law.name() +
+                     " law would reach " + fmt(delta_e / units::mm) +
                      " mm, not small against its first kink; raise the factor");
+  holder = std::make_unique<law::ElasticRiseLaw>(law, delta_e);
+  notes.push_back("rigid " + law.name() + " law regularized with an elastic rise to " +
+                  fmt(holder->delta_e() / units::mm) + " mm (area " +
+                  fmt(100 * (holder->area() / law.area() - 1), 3) + " %)");
+  return holder.get();
 }
 
-double ElasticRiseLaw::envelope_integral(double d) const {
-  if (d <= delta_e_)
-    return 0.5 * sigma_e_ / delta_e_ * d * d;
-  return 0.5 * sigma_e_ * delta_e_ + base_.envelope_integral(d) - base_.envelope_integral(delta_e_);
+DcbMeshLines dcb_mesh_lines(const law::Specimen& specimen, const FemParameters& p) {
+  const double L = specimen.length, a0 = specimen.initial_crack;
+  const double h = specimen.arm_thickness();
+  DcbMeshLines m;
+  // Uniform elements along x with a mesh line at a0, so that every advance is one element.
+  const unsigned n_a0 = std::max(1u, unsigned(std::lround(a0 / p.element_size)));
+  m.dx = a0 / n_a0;
+  if (n_a0 < std::max(5u, p.tip_domain_elements + 1))
+    throw InputError("Specimen/Initial crack: the notch must span at least " +
+                     std::to_string(std::max(5u, p.tip_domain_elements + 1)) +
+                     " elements (the far-field J domain lies between load line and notch tip); "
+                     "reduce FEM/Element size");
+  const unsigned n_x = std::max(n_a0 + 1, unsigned(std::floor(L / m.dx + 1e-9)));
+  for (unsigned i = 0; i <= n_x; ++i)
+    m.x.push_back(std::min(L, i * m.dx));
+  if (L - m.x.back() > 0.5 * m.dx)
+    m.x.push_back(L);
+  else
+    m.x.back() = L;
+
+  // Heights: square elements at the crack plane, graded towards the faces, capped.
+  m.y = {0.0};
+  double size = m.dx;
+  const double cap = h / p.min_layers;
+  while (m.y.back() + size < h - 1e-12 * h) {
+    m.y.push_back(m.y.back() + size);
+    size = std::min(size * p.grading, cap);
+  }
+  const double rest = h - m.y.back();
+  if (rest < 0.5 * size && m.y.size() > 1)
+    m.y.back() = h;
+  else
+    m.y.push_back(h);
+  return m;
 }
 
-std::vector<double> ElasticRiseLaw::kinks() const {
-  std::vector<double> k{0.0, delta_e_};
-  for (double b : base_.kinks())
-    if (b > delta_e_)
-      k.push_back(b);
-  return k;
+bool check_steady_state(law::SimulationResult& result, const std::vector<double>& dissipated,
+                        double first_root_move, const FemParameters& p) {
+  const auto& rc = result.rcurve;
+  const auto& pt = rc.back();
+  if (pt.a - first_root_move < p.steady_state_window)
+    return false;
+  double lo = pt.R_J, hi = pt.R_J;
+  std::size_t i0 = rc.size() - 1;
+  while (i0 > 0 && pt.a - rc[i0 - 1].a <= p.steady_state_window * (1 + 1e-9)) {
+    --i0;
+    lo = std::min(lo, rc[i0].R_J);
+    hi = std::max(hi, rc[i0].R_J);
+  }
+  if (hi - lo > p.plateau_tolerance * std::abs(pt.R_J))
+    return false;
+  result.reached_steady_state = true;
+  // G_ss from R_J: every record is a state with tip J = J_tip. R_energy over the same window
+  // carries the sawtooth of discrete advances (each release happens at fixed opening; in the
+  // LEFM limit the energy per advance is J_tip (1 - 2 da/(a + chi h))) and the discreteness of
+  // the root failures; it is reported beside.
+  double sum = 0;
+  for (std::size_t i = i0; i < rc.size(); ++i)
+    sum += rc[i].R_J;
+  result.G_ss = sum / double(rc.size() - i0);
+  const double g_energy = (dissipated.back() - dissipated[i0]) / (pt.a - rc[i0].a);
+  result.notes.push_back("steady state at a = " + fmt(pt.a / units::mm) + " mm: R_J spread " +
+                         fmt(100 * (hi - lo) / pt.R_J, 3) + " % over the last " +
+                         fmt((pt.a - rc[i0].a) / units::mm) +
+                         " mm; G_ss = mean R_J there; R_energy over the window (dissipation "
+                         "per growth) " +
+                         fmt(g_energy) + " J/m^2");
+  return true;
 }
 
 } // namespace fiberbridge::fem

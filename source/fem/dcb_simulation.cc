@@ -79,40 +79,10 @@ namespace {
 
 using namespace dealii;
 constexpr int dim = 2;
-using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// fmt, orthotropic_stiffness, ElasticRiseLaw and Ramp live in dcb_common (shared with the
+// fmt, orthotropic_stiffness, insertable_law, the mesh lines, the steady-state check, Ramp and
+// StressPostprocessor live in dcb_common (shared with the
 // distributed engine).
-
-/// sigma_xx, sigma_yy, sigma_xy [Pa] for DataOut.
-class StressPostprocessor : public DataPostprocessor<dim> {
-public:
-  explicit StressPostprocessor(const SymmetricTensor<4, dim>& C) : C_(C) {}
-  void evaluate_vector_field(const DataPostprocessorInputs::Vector<dim>& in,
-                             std::vector<Vector<double>>& out) const override {
-    for (unsigned int q = 0; q < in.solution_gradients.size(); ++q) {
-      SymmetricTensor<2, dim> eps;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = i; j < dim; ++j)
-          eps[i][j] = 0.5 * (in.solution_gradients[q][i][j] + in.solution_gradients[q][j][i]);
-      const SymmetricTensor<2, dim> s = C_ * eps;
-      out[q](0) = s[0][0];
-      out[q](1) = s[1][1];
-      out[q](2) = s[0][1];
-    }
-  }
-  std::vector<std::string> get_names() const override {
-    return {"stress_xx_Pa", "stress_yy_Pa", "stress_xy_Pa"};
-  }
-  UpdateFlags get_needed_update_flags() const override { return update_gradients; }
-
-private:
-  SymmetricTensor<4, dim> C_;
-};
 
 /// Sparse direct solver of the condensed Jacobian (FEM/Linear solver): factorize() once per
 /// Jacobian, then any number of solve() calls with that factorization.
@@ -243,7 +213,7 @@ private:
   const law::Specimen specimen_;
   const law::Material material_;
   const law::TractionLaw& user_law_;
-  std::unique_ptr<ElasticRiseLaw> regularized_law_;
+  std::unique_ptr<law::ElasticRiseLaw> regularized_law_;
   const law::TractionLaw* law_ = nullptr; ///< the law simulated (user law or regularized)
   const double j_tip_;
   const FemParameters prm_;
@@ -316,15 +286,7 @@ DcbModel::DcbModel(const law::Specimen& specimen, const law::Material& material,
   prm_.validate();
   if (!(j_tip > 0))
     throw InputError("Cohesive law/J tip: the FEM tip criterion needs J tip > 0");
-  law_ = &user_law_;
-  if (law.critical_opening() > 0 && law.rigid_at_zero_opening()) {
-    regularized_law_ = std::make_unique<ElasticRiseLaw>(law, prm_.rigid_law_stiffness_factor *
-                                                                 material.E_T / prm_.element_size);
-    law_ = regularized_law_.get();
-    result_.notes.push_back("rigid " + law.name() + " law regularized with an elastic rise to " +
-                            fmt(regularized_law_->delta_e() / units::mm) + " mm (area " +
-                            fmt(100 * (law_->area() / law.area() - 1), 3) + " %)");
-  }
+  law_ = insertable_law(law, material, prm_, regularized_law_, result_.notes);
 }
 
 void DcbModel::report(const std::string& line) const {
@@ -336,38 +298,10 @@ void DcbModel::report(const std::string& line) const {
 // Setup
 
 void DcbModel::make_grid() {
-  const double L = specimen_.length, a0 = specimen_.initial_crack;
-  const double h = specimen_.arm_thickness();
-  // Uniform elements along x with a mesh line at a0, so that every advance is one element.
-  const unsigned n_a0 = std::max(1u, unsigned(std::lround(a0 / prm_.element_size)));
-  dx_ = a0 / n_a0;
-  if (n_a0 < std::max(5u, prm_.tip_domain_elements + 1))
-    throw InputError("Specimen/Initial crack: the notch must span at least " +
-                     std::to_string(std::max(5u, prm_.tip_domain_elements + 1)) +
-                     " elements (the far-field J domain lies between load line and notch tip); "
-                     "reduce FEM/Element size");
-  const unsigned n_x = std::max(n_a0 + 1, unsigned(std::floor(L / dx_ + 1e-9)));
-  x_lines_.clear();
-  for (unsigned i = 0; i <= n_x; ++i)
-    x_lines_.push_back(std::min(L, i * dx_));
-  if (L - x_lines_.back() > 0.5 * dx_)
-    x_lines_.push_back(L);
-  else
-    x_lines_.back() = L;
-
-  // Heights: square elements at the crack plane, graded towards the faces, capped.
-  std::vector<double> y_lines{0.0};
-  double size = dx_;
-  const double cap = h / prm_.min_layers;
-  while (y_lines.back() + size < h - 1e-12 * h) {
-    y_lines.push_back(y_lines.back() + size);
-    size = std::min(size * prm_.grading, cap);
-  }
-  const double rest = h - y_lines.back();
-  if (rest < 0.5 * size && y_lines.size() > 1)
-    y_lines.back() = h;
-  else
-    y_lines.push_back(h);
+  const DcbMeshLines lines = dcb_mesh_lines(specimen_, prm_);
+  dx_ = lines.dx;
+  x_lines_ = lines.x;
+  const std::vector<double>& y_lines = lines.y;
 
   const unsigned nx = x_lines_.size() - 1, ny = y_lines.size() - 1;
   std::vector<Point<dim>> vertices;
@@ -1238,7 +1172,7 @@ void DcbModel::output_fields(unsigned int advance) {
       dim, DataComponentInterpretation::component_is_part_of_vector);
   data_out.add_data_vector(u_, std::vector<std::string>(dim, "displacement_m"),
                            DataOut<dim>::type_dof_data, vector_field);
-  const StressPostprocessor stress(C_);
+  const StressPostprocessor<dim> stress(C_);
   data_out.add_data_vector(u_, stress);
   data_out.build_patches(mapping_, prm_.degree);
   std::ostringstream name;
@@ -1283,37 +1217,7 @@ void DcbModel::write_interface_csv() const {
 // The algorithm
 
 bool DcbModel::reached_steady_state(double first_root_move) {
-  // Steady state: the root has moved and R_J has been flat over the last window of growth.
-  const auto& rc = result_.rcurve;
-  const auto& pt = rc.back();
-  if (pt.a - first_root_move < prm_.steady_state_window)
-    return false;
-  double lo = pt.R_J, hi = pt.R_J;
-  std::size_t i0 = rc.size() - 1;
-  while (i0 > 0 && pt.a - rc[i0 - 1].a <= prm_.steady_state_window * (1 + 1e-9)) {
-    --i0;
-    lo = std::min(lo, rc[i0].R_J);
-    hi = std::max(hi, rc[i0].R_J);
-  }
-  if (hi - lo > prm_.plateau_tolerance * std::abs(pt.R_J))
-    return false;
-  result_.reached_steady_state = true;
-  // G_ss from R_J: every record is a state with tip J = J_tip. R_energy over the same window
-  // carries the sawtooth of discrete advances (each release happens at fixed opening; in the
-  // LEFM limit the energy per advance is J_tip (1 - 2 da/(a + chi h))) and the discreteness of
-  // the root failures; it is reported beside.
-  double sum = 0;
-  for (std::size_t i = i0; i < rc.size(); ++i)
-    sum += rc[i].R_J;
-  result_.G_ss = sum / double(rc.size() - i0);
-  const double g_energy = (dissipated_2d_.back() - dissipated_2d_[i0]) / (pt.a - rc[i0].a);
-  result_.notes.push_back("steady state at a = " + fmt(pt.a / units::mm) + " mm: R_J spread " +
-                          fmt(100 * (hi - lo) / pt.R_J, 3) + " % over the last " +
-                          fmt((pt.a - rc[i0].a) / units::mm) +
-                          " mm; G_ss = mean R_J there; R_energy over the window (dissipation "
-                          "per growth) " +
-                          fmt(g_energy) + " J/m^2");
-  return true;
+  return check_steady_state(result_, dissipated_2d_, first_root_move, prm_);
 }
 
 law::SimulationResult DcbModel::run() {

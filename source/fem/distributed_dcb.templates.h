@@ -83,45 +83,7 @@
 namespace fiberbridge::fem::distributed {
 
 using namespace dealii;
-using Clock = std::chrono::steady_clock;
 using Vec = TrilinosWrappers::MPI::Vector;
-
-inline double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-/// Stress components [Pa] for DataOut.
-template <int dim>
-class StressPostprocessor : public DataPostprocessor<dim> {
-public:
-  explicit StressPostprocessor(const SymmetricTensor<4, dim>& C) : C_(C) {}
-  void evaluate_vector_field(const DataPostprocessorInputs::Vector<dim>& in,
-                             std::vector<Vector<double>>& out) const override {
-    for (unsigned int q = 0; q < in.solution_gradients.size(); ++q) {
-      SymmetricTensor<2, dim> eps;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = i; j < dim; ++j)
-          eps[i][j] = 0.5 * (in.solution_gradients[q][i][j] + in.solution_gradients[q][j][i]);
-      const SymmetricTensor<2, dim> s = C_ * eps;
-      unsigned k = 0;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = i; j < dim; ++j)
-          out[q](k++) = s[i][j];
-    }
-  }
-  std::vector<std::string> get_names() const override {
-    const char* axis = "xyz";
-    std::vector<std::string> n;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = i; j < dim; ++j)
-        n.push_back(std::string("stress_") + axis[i] + axis[j] + "_Pa");
-    return n;
-  }
-  UpdateFlags get_needed_update_flags() const override { return update_gradients; }
-
-private:
-  SymmetricTensor<4, dim> C_;
-};
 
 template <int dim>
 class DistributedDcbModel {
@@ -194,7 +156,7 @@ private:
   const law::Specimen specimen_;
   const law::Material material_;
   const law::TractionLaw& user_law_;
-  std::unique_ptr<ElasticRiseLaw> regularized_law_;
+  std::unique_ptr<law::ElasticRiseLaw> regularized_law_;
   const law::TractionLaw* law_ = nullptr;
   const double j_tip_;
   const FemParameters prm_;
@@ -292,15 +254,7 @@ DistributedDcbModel<dim>::DistributedDcbModel(
     throw InputError("Cohesive law/J tip: the FEM tip criterion needs J tip > 0");
   if (dim == 3)
     width_ = specimen_.width;
-  law_ = &user_law_;
-  if (law.critical_opening() > 0 && law.rigid_at_zero_opening()) {
-    regularized_law_ = std::make_unique<ElasticRiseLaw>(law, prm_.rigid_law_stiffness_factor *
-                                                                 material.E_T / prm_.element_size);
-    law_ = regularized_law_.get();
-    result_.notes.push_back("rigid " + law.name() + " law regularized with an elastic rise to " +
-                            fmt(regularized_law_->delta_e() / units::mm) + " mm (area " +
-                            fmt(100 * (law_->area() / law.area() - 1), 3) + " %)");
-  }
+  law_ = insertable_law(law, material, prm_, regularized_law_, result_.notes);
 }
 
 template <int dim>
@@ -326,36 +280,11 @@ double DistributedDcbModel<dim>::norm(const Vec& v) const {
 
 template <int dim>
 void DistributedDcbModel<dim>::make_grid() {
-  const double L = specimen_.length, a0 = specimen_.initial_crack;
-  const double h = specimen_.arm_thickness();
   // x and y lines exactly as the serial engine (one element per advance, graded heights).
-  const unsigned n_a0 = std::max(1u, unsigned(std::lround(a0 / prm_.element_size)));
-  dx_ = a0 / n_a0;
-  if (n_a0 < std::max(5u, prm_.tip_domain_elements + 1))
-    throw InputError("Specimen/Initial crack: the notch must span at least " +
-                     std::to_string(std::max(5u, prm_.tip_domain_elements + 1)) +
-                     " elements (the far-field J domain lies between load line and notch tip); "
-                     "reduce FEM/Element size");
-  const unsigned n_x = std::max(n_a0 + 1, unsigned(std::floor(L / dx_ + 1e-9)));
-  x_lines_.clear();
-  for (unsigned i = 0; i <= n_x; ++i)
-    x_lines_.push_back(std::min(L, i * dx_));
-  if (L - x_lines_.back() > 0.5 * dx_)
-    x_lines_.push_back(L);
-  else
-    x_lines_.back() = L;
-  std::vector<double> y_lines{0.0};
-  double size = dx_;
-  const double cap = h / prm_.min_layers;
-  while (y_lines.back() + size < h - 1e-12 * h) {
-    y_lines.push_back(y_lines.back() + size);
-    size = std::min(size * prm_.grading, cap);
-  }
-  const double rest = h - y_lines.back();
-  if (rest < 0.5 * size && y_lines.size() > 1)
-    y_lines.back() = h;
-  else
-    y_lines.push_back(h);
+  const DcbMeshLines lines = dcb_mesh_lines(specimen_, prm_);
+  dx_ = lines.dx;
+  x_lines_ = lines.x;
+  const std::vector<double>& y_lines = lines.y;
   z_lines_ = {0.0};
   if (dim == 3) {
     const unsigned nz = prm_.width_elements > 0
@@ -1456,32 +1385,7 @@ law::RCurvePoint DistributedDcbModel<dim>::record_advance() {
 
 template <int dim>
 bool DistributedDcbModel<dim>::reached_steady_state(double first_root_move) {
-  const auto& rc = result_.rcurve;
-  const auto& pt = rc.back();
-  if (pt.a - first_root_move < prm_.steady_state_window)
-    return false;
-  double lo = pt.R_J, hi = pt.R_J;
-  std::size_t i0 = rc.size() - 1;
-  while (i0 > 0 && pt.a - rc[i0 - 1].a <= prm_.steady_state_window * (1 + 1e-9)) {
-    --i0;
-    lo = std::min(lo, rc[i0].R_J);
-    hi = std::max(hi, rc[i0].R_J);
-  }
-  if (hi - lo > prm_.plateau_tolerance * std::abs(pt.R_J))
-    return false;
-  result_.reached_steady_state = true;
-  double sum = 0;
-  for (std::size_t i = i0; i < rc.size(); ++i)
-    sum += rc[i].R_J;
-  result_.G_ss = sum / double(rc.size() - i0);
-  const double g_energy = (dissipated_.back() - dissipated_[i0]) / (pt.a - rc[i0].a);
-  result_.notes.push_back("steady state at a = " + fmt(pt.a / units::mm) + " mm: R_J spread " +
-                          fmt(100 * (hi - lo) / pt.R_J, 3) + " % over the last " +
-                          fmt((pt.a - rc[i0].a) / units::mm) +
-                          " mm; G_ss = mean R_J there; R_energy over the window (dissipation "
-                          "per growth) " +
-                          fmt(g_energy) + " J/m^2");
-  return true;
+  return check_steady_state(result_, dissipated_, first_root_move, prm_);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,19 +1,30 @@
 #pragma once
 // Pieces of the DCB finite-element model shared by the serial engine (dcb_simulation.cc) and the
-// MPI-distributed engine (distributed_dcb.templates.h): the orthotropic stiffness, the elastic
-// rise that makes rigid laws insertable, the J-integral weight and number formatting. Keeping one
+// MPI-distributed engine (distributed_dcb.templates.h): the orthotropic stiffness, the insertable
+// law (law::ElasticRiseLaw for rigid laws), the mesh lines, the steady-state check, the J-integral
+// weight, the stress output and number formatting. Keeping one
 // copy is what makes "the distributed engine solves the same discrete problem" checkable.
 #include "fiberbridge/fem/dcb_simulation.h"
+#include "fiberbridge/law/elastic_rise_law.h"
 #include "fiberbridge/law/specimen.h"
 #include "fiberbridge/law/traction_law.h"
 
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/numerics/data_postprocessor.h>
 
+#include <chrono>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace fiberbridge::fem {
 
 std::string fmt(double v, int precision = 4);
+
+using Clock = std::chrono::steady_clock;
+inline double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 /// Stiffness of the orthotropic wood with 1 = L along x, 2 = T along y (normal to the crack
 /// plane), 3 = R along z (out of plane in 2D, across the width in 3D).
@@ -23,28 +34,6 @@ std::string fmt(double v, int precision = 4);
 template <int dim>
 dealii::SymmetricTensor<4, dim> orthotropic_stiffness(const law::Material& m,
                                                       const FemParameters& p);
-
-/// A law with sigma(0) > 0 cannot be inserted at a tied (zero-opening) node: it would pull with
-/// sigma(0) at no opening. It gets an elastic rise from the origin to the envelope with slope k.
-class ElasticRiseLaw : public law::TractionLaw {
-public:
-  ElasticRiseLaw(const law::TractionLaw& base, double k);
-  std::string name() const override { return base_.name(); }
-  double envelope(double d) const override {
-    return d < delta_e_ ? sigma_e_ * d / delta_e_ : base_.envelope(d);
-  }
-  double envelope_slope(double d) const override {
-    return d < delta_e_ ? sigma_e_ / delta_e_ : base_.envelope_slope(d);
-  }
-  double envelope_integral(double d) const override;
-  double critical_opening() const override { return base_.critical_opening(); }
-  std::vector<double> kinks() const override;
-  double delta_e() const { return delta_e_; }
-
-private:
-  const law::TractionLaw& base_;
-  double delta_e_ = 0, sigma_e_ = 0;
-};
 
 /// Weight q(x) of the domain J integral: 0 outside [x0, x3], 1 on [x1, x2], linear between.
 /// q depends on x only, so the strip spans both arms (and the whole width in 3D) and the top,
@@ -70,6 +59,64 @@ struct Ramp {
       return 0;
     return -1 / (x3 - x2);
   }
+};
+
+/// The law the crack segments use: `law` itself, or (for a rigid law, sigma(0) > 0) an elastic
+/// rise (law::ElasticRiseLaw) of slope rigid_law_stiffness_factor E_T / element size held in
+/// `holder`; a note says so.
+const law::TractionLaw* insertable_law(const law::TractionLaw& law, const law::Material& material,
+                                       const FemParameters& p,
+                                       std::unique_ptr<law::ElasticRiseLaw>& holder,
+                                       std::vector<std::string>& notes);
+
+/// Mesh lines of one arm: uniform along x with a line at a0 (every tip advance is one element of
+/// size dx), heights from the crack plane y = 0 to the arm thickness h, square at the plane and
+/// graded towards the face, capped at h / min_layers. Throws InputError if the notch spans too
+/// few elements for the far-field J domain.
+struct DcbMeshLines {
+  double dx = 0;
+  std::vector<double> x, y;
+};
+DcbMeshLines dcb_mesh_lines(const law::Specimen& specimen, const FemParameters& p);
+
+/// Steady state: the root has moved (at a = first_root_move) and R_J has stayed within
+/// plateau_tolerance over the last steady_state_window of growth. Then sets G_ss (mean R_J over
+/// the window) and reached_steady_state in `result`, notes the numbers with R_energy over the
+/// window from `dissipated` (per unit width, one entry per record), and returns true.
+bool check_steady_state(law::SimulationResult& result, const std::vector<double>& dissipated,
+                        double first_root_move, const FemParameters& p);
+
+/// Stress components [Pa] for DataOut (xx, xy, yy in 2D; the six in 3D).
+template <int dim>
+class StressPostprocessor : public dealii::DataPostprocessor<dim> {
+public:
+  explicit StressPostprocessor(const dealii::SymmetricTensor<4, dim>& C) : C_(C) {}
+  void evaluate_vector_field(const dealii::DataPostprocessorInputs::Vector<dim>& in,
+                             std::vector<dealii::Vector<double>>& out) const override {
+    for (unsigned int q = 0; q < in.solution_gradients.size(); ++q) {
+      dealii::SymmetricTensor<2, dim> eps;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          eps[i][j] = 0.5 * (in.solution_gradients[q][i][j] + in.solution_gradients[q][j][i]);
+      const dealii::SymmetricTensor<2, dim> s = C_ * eps;
+      unsigned k = 0;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          out[q](k++) = s[i][j];
+    }
+  }
+  std::vector<std::string> get_names() const override {
+    const char* axis = "xyz";
+    std::vector<std::string> n;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        n.push_back(std::string("stress_") + axis[i] + axis[j] + "_Pa");
+    return n;
+  }
+  dealii::UpdateFlags get_needed_update_flags() const override { return dealii::update_gradients; }
+
+private:
+  dealii::SymmetricTensor<4, dim> C_;
 };
 
 } // namespace fiberbridge::fem
