@@ -37,9 +37,11 @@ void declare_mpm_section(dealii::ParameterHandler& prm) {
   prm.declare_entry("Growth step", std::to_string(d.growth_step_cells), Integer(1, 4),
                     "Tip advance per propagation event, in whole cells: the tip moves from node "
                     "column to node column (the velocity fields split per node).");
-  prm.declare_entry("J window periods", std::to_string(d.j_window_periods), Double(0, 1),
-                    "Growth when the tip J averaged over this many arm periods (length a0) "
-                    "reaches J_tip; the window restarts at each advance.");
+  prm.declare_entry(
+      "J window periods", std::to_string(d.j_window_periods), Double(0, 1),
+      "Growth when the tip J averaged over this many periods of the arm at the current crack "
+      "length reaches J_tip; the window restarts at each advance and is cut to 0.7 of the "
+      "time the loading needs to drive the tip one step.");
   prm.declare_entry("Tip J domain", std::to_string(d.tip_j_cells), Double(1),
                     "The tip J domain integral weights a frame from this many cells around the tip "
                     "to two cells farther.");

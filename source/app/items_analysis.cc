@@ -134,6 +134,13 @@ void declare_specimen_sections(dealii::ParameterHandler& prm) {
   prm.declare_entry("Plane", "stress", Selection("stress|strain"), "2D assumption.");
   prm.declare_entry("Density", std::to_string(m.density), Double(0),
                     "kg/m^3 (dynamic models only).");
+  prm.declare_entry("E_R over E_L", std::to_string(m.E_R_over_E_L), Double(0),
+                    "Radial (out-of-plane, z) modulus ratio; plane strain and 3D only (Wood "
+                    "Handbook, Douglas-fir: 0.068).");
+  prm.declare_entry("nu_LR", std::to_string(m.nu_LR), Double(0, 0.5),
+                    "Plane strain and 3D only (Wood Handbook: 0.292).");
+  prm.declare_entry("nu_RT", std::to_string(m.nu_RT), Double(0, 1),
+                    "Plane strain and 3D only (Wood Handbook: 0.390).");
   prm.leave_subsection();
 }
 

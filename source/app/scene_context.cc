@@ -74,6 +74,9 @@ law::Material SceneContext::material() const {
   m.nu_LT = prm->get_double("nu_LT");
   m.plane_stress = prm->get("Plane") == "stress";
   m.density = prm->get_double("Density");
+  m.E_R_over_E_L = prm->get_double("E_R over E_L");
+  m.nu_LR = prm->get_double("nu_LR");
+  m.nu_RT = prm->get_double("nu_RT");
   prm->leave_subsection();
   m.validate("Material");
   return m;

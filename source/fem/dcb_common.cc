@@ -21,20 +21,11 @@ std::string fmt(double v, int precision) {
 }
 
 template <>
-SymmetricTensor<4, 2> orthotropic_stiffness<2>(const law::Material& m, const FemParameters& p) {
+SymmetricTensor<4, 2> orthotropic_stiffness<2>(const law::Material& m,
+                                               const FemParameters& /* 3D shear moduli only */) {
   constexpr int dim = 2;
-  double s11 = 1 / m.E_L, s22 = 1 / m.E_T, s12 = -m.nu_LT / m.E_L;
-  if (!m.plane_stress) {
-    const double E_R = p.E_R_over_E_L * m.E_L;
-    const double s33 = 1 / E_R, s13 = -p.nu_LR / m.E_L, s23 = -p.nu_RT / E_R;
-    s11 -= s13 * s13 / s33;
-    s22 -= s23 * s23 / s33;
-    s12 -= s13 * s23 / s33;
-  }
+  const auto [s11, s22, s12] = law::in_plane_compliance(m);
   const double det = s11 * s22 - s12 * s12;
-  if (!(det > 0))
-    throw InputError("Material/FEM: the in-plane orthotropic compliance is not positive "
-                     "definite; check nu_LT, nu_LR, nu_RT and E_R over E_L");
   SymmetricTensor<4, dim> C;
   C[0][0][0][0] = s22 / det;
   C[1][1][1][1] = s11 / det;
@@ -49,14 +40,14 @@ SymmetricTensor<4, 3> orthotropic_stiffness<3>(const law::Material& m, const Fem
   // Normal compliance in the material axes (L, T, R) = (x, y, z), the same constants and
   // conventions as the plane-strain reduction above (s23 = -nu_RT / E_R), so a thin 3D plate
   // (sigma_zz = 0) is the 2D plane-stress model and a fully restrained one the plane-strain one.
-  const double E_R = p.E_R_over_E_L * m.E_L;
+  const double E_R = m.E_R_over_E_L * m.E_L;
   FullMatrix<double> S(3, 3), C(3, 3);
   S(0, 0) = 1 / m.E_L;
   S(1, 1) = 1 / m.E_T;
   S(2, 2) = 1 / E_R;
   S(0, 1) = S(1, 0) = -m.nu_LT / m.E_L;
-  S(0, 2) = S(2, 0) = -p.nu_LR / m.E_L;
-  S(1, 2) = S(2, 1) = -p.nu_RT / E_R;
+  S(0, 2) = S(2, 0) = -m.nu_LR / m.E_L;
+  S(1, 2) = S(2, 1) = -m.nu_RT / E_R;
   // Positive definite iff the leading minors are positive.
   const double m2 = S(0, 0) * S(1, 1) - S(0, 1) * S(1, 0);
   const double m3 = S(0, 0) * (S(1, 1) * S(2, 2) - S(1, 2) * S(2, 1)) -

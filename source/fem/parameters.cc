@@ -81,11 +81,6 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Relative spread of R_J over the window accepted as steady state.");
   prm.declare_entry("Output every", "0", Integer(0),
                     "Write VTU every N tip advances (0: only the final state).");
-  prm.declare_entry("E_R over E_L", "0.068", Double(0),
-                    "Radial (out-of-plane, z) modulus ratio; used by plane strain (2D) and by "
-                    "3D (Wood Handbook, Douglas-fir).");
-  prm.declare_entry("nu_LR", "0.292", Double(0, 0.5), "Plane strain (2D) and 3D only.");
-  prm.declare_entry("nu_RT", "0.390", Double(0, 1), "Plane strain (2D) and 3D only.");
 }
 
 void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
@@ -121,9 +116,6 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   steady_state_window = prm.get_double("Steady-state window") * units::mm;
   plateau_tolerance = prm.get_double("Plateau tolerance");
   output_every = prm.get_integer("Output every");
-  E_R_over_E_L = prm.get_double("E_R over E_L");
-  nu_LR = prm.get_double("nu_LR");
-  nu_RT = prm.get_double("nu_RT");
   validate();
 }
 
@@ -148,7 +140,6 @@ void FemParameters::validate() const {
   require(tip_domain_elements >= 1, "Tip J domain half-width", "must be >= 1 element");
   require(steady_state_window > 0, "Steady-state window", "must be positive (mm)");
   require(plateau_tolerance > 0, "Plateau tolerance", "must be positive");
-  require(E_R_over_E_L > 0, "E_R over E_L", "must be positive");
   require(dimension == 2 || dimension == 3, "Dimension", "must be 2 or 3");
   require(G_LR_over_E_L > 0, "G_LR over E_L", "must be positive");
   require(G_RT_over_E_L > 0, "G_RT over E_L", "must be positive");

@@ -21,6 +21,30 @@ void Material::validate(const std::string& c) const {
     throw InputError(c + "/nu_LT: must be >= 0 with nu_LT^2 E_T/E_L < 1");
   if (!(density > 0))
     throw InputError(c + "/Density: must be positive (kg/m^3)");
+  if (!(E_R_over_E_L > 0))
+    throw InputError(c + "/E_R over E_L: must be positive");
+  if (!(nu_LR >= 0 && nu_RT >= 0))
+    throw InputError(c + "/nu_LR, nu_RT: must be >= 0");
+}
+
+InPlaneCompliance in_plane_compliance(const Material& m, const std::string& c) {
+  InPlaneCompliance s;
+  s.s11 = 1 / m.E_L;
+  s.s22 = 1 / m.E_T;
+  s.s12 = -m.nu_LT / m.E_L;
+  if (!m.plane_stress) {
+    const double E_R = m.E_R_over_E_L * m.E_L;
+    const double s33 = 1 / E_R, s13 = -m.nu_LR / m.E_L, s23 = -m.nu_RT / E_R;
+    s.s11 -= s13 * s13 / s33;
+    s.s22 -= s23 * s23 / s33;
+    s.s12 -= s13 * s23 / s33;
+  }
+  if (!(s.s11 > 0 && s.s22 > 0 && s.s11 * s.s22 - s.s12 * s.s12 > 0))
+    throw InputError(c +
+                     ": the in-plane orthotropic compliance is not positive definite; check "
+                     "nu_LT" +
+                     std::string(m.plane_stress ? "" : ", nu_LR, nu_RT and E_R over E_L"));
+  return s;
 }
 
 double cbt_chi(const Material& m) {

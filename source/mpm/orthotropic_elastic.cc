@@ -9,15 +9,13 @@ namespace fiberbridge::mpm {
 
 OrthotropicElastic::OrthotropicElastic(const law::Material& m) {
   m.validate("Material");
-  if (!m.plane_stress)
-    throw InputError("Material/Plane: the MPM model supports plane stress only; plane strain "
-                     "needs the out-of-plane constants (E_R, nu_LR, nu_TR) that the Material "
-                     "section does not define");
-  // Plane-stress reduced stiffness of an orthotropic lamina (grain along x).
-  const double d = 1 - m.nu_LT * m.nu_TL();
-  q11_ = m.E_L / d;
-  q22_ = m.E_T / d;
-  q12_ = m.nu_LT * m.E_T / d;
+  // Reduced in-plane stiffness (grain along x), the inverse of the compliance the FEM uses:
+  // plane stress, or plane strain with the radial constants (sigma_zz does no work there).
+  const law::InPlaneCompliance s = law::in_plane_compliance(m);
+  const double det = s.s11 * s.s22 - s.s12 * s.s12;
+  q11_ = s.s22 / det;
+  q22_ = s.s11 / det;
+  q12_ = -s.s12 / det;
   q66_ = m.G_LT;
   density_ = m.density;
 }

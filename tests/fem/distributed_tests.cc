@@ -156,15 +156,15 @@ TEST(FemDistributed, Lefm3dFollowsCorrectedBeamTheory) {
 // that does not vanish with the width: measured 1.2e-3 at B = 1 mm and at 0.5 mm. 2e-3 bounds
 // it; plane strain differs by ~5e-3 on the load, a width mis-scaling by a factor.
 TEST(FemDistributed, Thin3dReproducesPlaneStress) {
-  const law::Material wood;
   const auto law = short_trilinear();
   auto spec = short_dcb();
   spec.width = 1 * mm; // the 2D load is per width times this width
   for (const bool coupled : {false, true}) {
     auto prm = distributed_parameters();
+    law::Material wood;
     if (!coupled) {
-      prm.nu_LR = 0;
-      prm.nu_RT = 0;
+      wood.nu_LR = 0;
+      wood.nu_RT = 0;
     }
     const auto r2 = fem::simulate_dcb_distributed(spec, wood, law, 200, prm, "", {}, MPI_COMM_SELF);
     ASSERT_GE(r2.rcurve.size(), 10u);

@@ -351,10 +351,10 @@ TEST(FemDcb, PlaneStrainReducesToPlaneStressWithoutPoissonCoupling) {
   law::Material strain = stress;
   strain.plane_stress = false;
   const auto r_stress = fem::simulate_dcb(spec, stress, law::NoBridgingLaw(), 200, prm);
-  fem::FemParameters uncoupled = prm;
+  law::Material uncoupled = strain;
   uncoupled.nu_LR = 0;
   uncoupled.nu_RT = 0;
-  const auto r_uncoupled = fem::simulate_dcb(spec, strain, law::NoBridgingLaw(), 200, uncoupled);
+  const auto r_uncoupled = fem::simulate_dcb(spec, uncoupled, law::NoBridgingLaw(), 200, prm);
   const auto r_strain = fem::simulate_dcb(spec, strain, law::NoBridgingLaw(), 200, prm);
   ASSERT_EQ(r_stress.rcurve.size(), r_uncoupled.rcurve.size());
   ASSERT_EQ(r_stress.rcurve.size(), r_strain.rcurve.size());

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -116,6 +117,17 @@ TEST(MpmDcb, RejectsUnusableInput) {
 
 namespace {
 
+/// The propagation runs load 4x slower than the default: quasi-static growth, where the result
+/// no longer depends on the growth criterion's J window (linear softening, G_ss for windows of
+/// 0.25, 0.35 and 0.5 arm periods: -2.3, -2.4, -2.1 %; at the default 8 loading periods the
+/// loading rate cuts the window at some advances and G_ss moved between -1.7 and -4.9 % with
+/// the window rule). A verification run should measure the discretization, not the rate.
+MpmParameters quasi_static() {
+  MpmParameters p = coarse();
+  p.loading_periods = 32;
+  return p;
+}
+
 /// One propagation run per law, shared by the tests that read it (each run takes seconds).
 struct PropagationRun {
   law::Specimen specimen = small_specimen();
@@ -123,7 +135,7 @@ struct PropagationRun {
   std::unique_ptr<law::TractionLaw> law;
   law::SimulationResult result;
   PropagationRun(std::unique_ptr<law::TractionLaw> l) : law(std::move(l)) {
-    result = simulate_dcb(specimen, material, *law, 200, coarse(), "");
+    result = simulate_dcb(specimen, material, *law, 200, quasi_static(), "");
   }
 };
 
@@ -271,42 +283,31 @@ TEST(MpmDcbPropagation, LinearSofteningZoneDevelopsAndReachesSteadyState) {
   // opening (the partly split tip cell, see the notes), and its law energy counts from zero.
   // Measured -0.9 % of the work (-0.0075 J, 3.7 J/m^2 per unit growth); 1.5 % bounds it, and a
   // positive residual (energy lost outside the ledger) is held to the LEFM level.
+  double worst = 0;
   for (const auto& p : r.rcurve) {
     const double residual =
         p.external_work - p.strain_energy - p.kinetic_energy - p.zone_recoverable - p.dissipated;
     EXPECT_GT(residual, -0.015 * p.external_work) << "a = " << p.a;
     EXPECT_LT(residual, 0.005 * p.external_work) << "a = " << p.a;
+    worst = std::min(worst, residual / p.external_work);
   }
+  std::printf("linear: most negative energy residual %.2e of the work\n", worst);
   // The zone dissipates: at the end the dissipation exceeds J_c over the failed length.
   const auto& last = r.rcurve.back();
   EXPECT_GT(last.dissipated,
             0.5 * sc * dc * run.specimen.width * (last.root - run.specimen.initial_crack));
-}
 
-// Targets of the bridging run: R_J plateaus at J_tip + J_c (seed Eq. 1 and 2) and follows
-// Eq. 2 while the zone develops. Disabled: at 4 cells per arm the measured plateau is 281.6 J/m^2
-// against 299.5 (-6.0 %) and R_J deviates from Eq. 2 by 5.2 % (relative L2) during the
-// development (it was -10.6 % and 8.8 % before the tip J subtracted the law's work over the tip
-// crack particle's opening). What is left, measured: (a) the one-cell growth step, as in the
-// LEFM run (J_ff at growth 0.96 J_tip): -8 J/m^2; (b) the tip cell is only partly split, so
-// the tip crack particle reads the elastic stretch between the node rows as opening (0.016 mm,
-// 8 % of delta_c); a segment born at the next advance starts at half of it and its law work
-// from zero is never paid by the tractions (3.7 J/m^2 per unit growth: the energy residual of
-// LinearSofteningZoneDevelopsAndReachesSteadyState); (c) J_ff at the advances scatters by
-// +-6 % with the arm's ringing (time-averaged J_ff - zone work = tip J within 2-3 %). Tried
-// and measured: crack openings from the particles' displacements extrapolated to the plane
-// instead of the field velocities (-7.7 %; not kept), J_ff averaged over the growth window
-// (-7.5 %; not kept), and a segment's law counted from its opening at birth (-4.9 %, Eq. 2
-// 4.5 %: inside the bounds by 0.1 %, and the energy residual closes to 3e-4 of the work, but it
-// contradicts the tip J's subtraction, which assumes the law works from zero opening at the tip;
-// without that subtraction it gave -9.5 %; not kept). The tolerances below are the ones the
-// method should meet once the tip cell is resolved (e.g. a tip that moves with the split
-// column).
-TEST(MpmDcbPropagation, DISABLED_LinearSofteningPlateauAndDevelopmentMatchEq2) {
-  const auto& r = linear_run().result;
-  const double G_ss = 200 + 0.5 * 1e6 * 0.2e-3 - 0.5 * 1e6 * 0.005 * 0.2e-3; // elastic rise
-  // Plateau: the J_ff path independence (2 %) and the zone resolution of a few cells (3 %).
-  EXPECT_NEAR(r.G_ss / G_ss, 1.0, 0.05);
-  // Development: Eq. 2 is exact for R_J; 5 % for the same reasons.
+  // Targets (seed Eq. 1 and 2): R_J plateaus at J_tip + J_c of the law the crack carries (the
+  // rigid law gets an elastic rise to 0.005 delta_c, which takes s_c delta_e / 2 off its area)
+  // and follows Eq. 2 while the zone develops. Measured: G_ss 292.6 against 299.5 (-2.3 %), R_J
+  // against Eq. 2 2.8 % (relative L2). What the 2.3 % is, measured at the advances (time
+  // averages over the steady part): J_ff reads 1.6 % below tip J + zone work (the path
+  // independence of the two domain integrals, 1.6 % also on the stationary crack), and the
+  // zone's tractions work 1 % of G_ss below the law's envelope (segments that unload a little
+  // while the arm rings follow the unloading line). The 5 % bounds leave room for that level
+  // (3 %) and the scatter of the advances with the arm's ringing (+-1 %); the earlier rule
+  // (J window fixed at the a0 arm period) measured -6.0 % and 5.2 % and fails them.
+  const double G_law = 200 + 0.5 * sc * dc - 0.5 * sc * 0.005 * dc;
+  EXPECT_NEAR(r.G_ss / G_law, 1.0, 0.05);
   EXPECT_LT(r.rdelta_rel_error_vs_eq2, 0.05);
 }

@@ -55,7 +55,7 @@ TEST(MpmShape, UgimpGradientMatchesFiniteDifference) {
   }
 }
 
-TEST(MpmElastic, PlaneStressOrthotropicCompliance) {
+TEST(MpmElastic, PlaneStressAndStrainOrthotropicCompliance) {
   law::Material m;
   OrthotropicElastic e(m);
   // Uniaxial stress along L: strain (1/E_L, -nu_LT/E_L) must give stress (1, 0).
@@ -71,7 +71,16 @@ TEST(MpmElastic, PlaneStressOrthotropicCompliance) {
   const double gam[3] = {0, 0, 0.5 / m.G_LT};
   e.stress(gam, s);
   EXPECT_NEAR(s[2], 1.0, 1e-12);
+  // Plane strain: the reduced compliance (law::in_plane_compliance, the FEM's) inverted.
   m.plane_stress = false;
+  const law::InPlaneCompliance c = law::in_plane_compliance(m);
+  EXPECT_LT(c.s11, 1 / m.E_L); // eps_zz = 0 stiffens
+  OrthotropicElastic strain(m);
+  const double eps_pe[3] = {c.s11, c.s12, 0};
+  strain.stress(eps_pe, s);
+  EXPECT_NEAR(s[0], 1.0, 1e-12);
+  EXPECT_NEAR(s[1], 0.0, 1e-12);
+  m.nu_LR = -0.1;
   EXPECT_THROW(OrthotropicElastic{m}, InputError);
 }
 

@@ -29,8 +29,9 @@ inline double seconds_since(Clock::time_point t0) {
 /// Stiffness of the orthotropic wood with 1 = L along x, 2 = T along y (normal to the crack
 /// plane), 3 = R along z (out of plane in 2D, across the width in 3D).
 /// dim = 2: plane stress, or plane strain through the reduced compliance S_ij - S_i3 S_j3 / S_33.
-/// dim = 3: the full orthotropic solid (E_R, nu_LR, nu_RT, G_LR, G_RT from FemParameters; the
-/// Material section gives E_L, E_T, G_LT, nu_LT). Throws InputError if not positive definite.
+/// dim = 3: the full orthotropic solid (E_R, nu_LR, nu_RT from law::Material, G_LR, G_RT from
+/// FemParameters; the Material section gives E_L, E_T, G_LT, nu_LT). Throws InputError if not
+/// positive definite.
 template <int dim>
 dealii::SymmetricTensor<4, dim> orthotropic_stiffness(const law::Material& m,
                                                       const FemParameters& p);

@@ -61,11 +61,7 @@ struct FemParameters {
   double steady_state_window = 10e-3;     ///< crack growth over which the plateau is judged [m]
   double plateau_tolerance = 0.01;        ///< relative spread of R_J accepted as a plateau
   unsigned int output_every = 0;          ///< VTU every N advances (0: only the final state)
-  /// Out-of-plane (radial) constants for plane strain (USDA Wood Handbook, Douglas-fir:
-  /// E_R/E_L = 0.068, nu_LR = 0.292, nu_RT = 0.390).
-  double E_R_over_E_L = 0.068;
-  double nu_LR = 0.292;
-  double nu_RT = 0.390;
+  /// (The out-of-plane E_R, nu_LR, nu_RT of plane strain and 3D are law::Material's.)
   /// 3D shear moduli (Wood Handbook, Douglas-fir: G_LR/E_L = 0.064, G_RT/E_L = 0.007).
   double G_LR_over_E_L = 0.064;
   double G_RT_over_E_L = 0.007;

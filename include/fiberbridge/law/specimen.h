@@ -22,9 +22,24 @@ struct Material {
   double nu_LT = 0.449;         ///< major Poisson ratio (nu_TL = nu_LT E_T / E_L)
   bool plane_stress = true;     ///< else plane strain (out-of-plane constants then matter)
   double density = 530;         ///< [kg/m^3], Douglas-fir at 12 % MC (dynamic models only)
+  /// Out-of-plane (radial, z) constants: plane strain and 3D only (USDA Wood Handbook,
+  /// Douglas-fir: E_R/E_L = 0.068, nu_LR = 0.292, nu_RT = 0.390).
+  double E_R_over_E_L = 0.068;
+  double nu_LR = 0.292;
+  double nu_RT = 0.390;
   void validate(const std::string& context = "Material") const;
   double nu_TL() const { return nu_LT * E_T / E_L; }
 };
+
+/// In-plane compliance (x = L along the beam, y = T across the crack plane) of the 2D models,
+/// eps = S sigma with eps_xx = s11 sig_xx + s12 sig_yy: plane stress, or plane strain
+/// (eps_zz = 0, so s_ij - s_i3 s_j3 / s33 with the radial constants). Shared by the FEM and the
+/// MPM so that both discretize the same continuum. Throws InputError when it is not positive
+/// definite.
+struct InPlaneCompliance {
+  double s11 = 0, s22 = 0, s12 = 0;
+};
+InPlaneCompliance in_plane_compliance(const Material& m, const std::string& context = "Material");
 
 /// Corrected-beam-theory length correction chi (notes/verification.md; Hashemi, Kinloch, Williams
 /// 1990): a -> a + chi h, chi = sqrt((E11/(11 G13)) (3 - 2 (Gamma/(1+Gamma))^2)),

@@ -55,6 +55,7 @@ private:
   void setup_loading();
   double opening_rate(double t) const;
   void advance_tip(double j_measured);
+  void set_growth_window();
   void finish(law::SimulationResult& r) const;
 
   law::Specimen spec_;
@@ -77,6 +78,8 @@ private:
   int n_check_ = 1;                 ///< steps between tip J evaluations
   std::size_t j_window_length_ = 1; ///< evaluations averaged by the growth criterion
   std::deque<double> j_window_;
+  int shortened_windows_ = 0; ///< advances whose window the loading rate cut short
+  int lagging_advances_ = 0;  ///< advances with the window-mean J above J_tip by > 2 %
   std::vector<std::string> notes_;
   std::string stop_reason_;
 

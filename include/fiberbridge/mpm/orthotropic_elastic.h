@@ -8,8 +8,8 @@ namespace fiberbridge::mpm {
 
 class OrthotropicElastic {
 public:
-  /// Plane stress only: plane strain needs out-of-plane constants (E_R, nu_LR, nu_TR) that
-  /// law::Material does not carry; asking for it throws InputError.
+  /// Plane stress or plane strain (law::in_plane_compliance); a compliance that is not positive
+  /// definite throws InputError.
   explicit OrthotropicElastic(const law::Material& m);
 
   /// Stress (xx, yy, xy) from strain (xx, yy, xy) with the tensor shear strain eps_xy.
