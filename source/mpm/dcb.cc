@@ -26,6 +26,10 @@ namespace {
 
 using units::mm;
 
+/// A window-mean tip J above this multiple of J_tip at an advance: the tip lagged the loading
+/// (the mean overshoots by the J rise within one check interval, well below 1 %, otherwise).
+constexpr double lag_tolerance = 1.02;
+
 std::string fmt(double v, int precision = 4) {
   std::ostringstream s;
   s.precision(precision);
@@ -309,7 +313,7 @@ bool DcbModel::step(bool grow) {
         "the tip reached the end ligament (" + fmt((spec_.length - end_tip_) / mm) + " mm)";
     return false;
   }
-  if (J > 1.02 * j_tip_)
+  if (J > lag_tolerance * j_tip_)
     ++lagging_advances_;
   advance_tip(J);
   set_growth_window();
@@ -410,8 +414,9 @@ void DcbModel::finish(law::SimulationResult& r) const {
         fmt(prm_.j_window_periods) +
         " arm periods (the ringing an advance excites is then only "
         "partly averaged and R_J scatters), and at " +
-        std::to_string(lagging_advances_) +
-        " the tip lagged the loading (window-mean J above 1.02 J_tip); raise MPM/Loading periods "
+        std::to_string(lagging_advances_) + " the tip lagged the loading (window-mean J above " +
+        fmt(lag_tolerance) +
+        " J_tip); raise MPM/Loading periods "
         "(the linear-softening verification run moved from -1.7 % at 8 to -2.3 % at 32 periods, "
         "where the result no longer depends on the window)");
   r.notes.push_back("largest kinetic/strain energy ratio at a tip advance: " +
@@ -465,14 +470,28 @@ void DcbModel::finish(law::SimulationResult& r) const {
   }
 
   // Steady state: the notch root has moved (LEFM: from the first advance, the zone is empty).
+  // An advance where the tip lagged the loading happened above J_tip: its R_J belongs to a
+  // higher tip toughness, so it stays in the R curve (its J_tip column shows it) but not in the
+  // plateau. (The PVA ladder lagged at the last 1-3 advances of the 4, 3.33 and 2.5 mm runs,
+  // near the end ligament, where the beam-theory time per step that cuts the window came out too
+  // long; leaving them out moved G_ss by +0.1, 0.0 and -0.8 %.)
   const bool bridging = law_->critical_opening() > 0;
   double sum = 0;
-  int count = 0;
-  for (const auto& p : rc)
-    if ((!bridging || p.root > a0_ + 0.25 * cell_) && std::isfinite(p.R_J)) {
-      sum += p.R_J;
-      ++count;
+  int count = 0, lagging = 0;
+  for (const auto& p : rc) {
+    if (!((!bridging || p.root > a0_ + 0.25 * cell_) && std::isfinite(p.R_J)))
+      continue;
+    if (p.J_tip > lag_tolerance * j_tip_) {
+      ++lagging;
+      continue;
     }
+    sum += p.R_J;
+    ++count;
+  }
+  if (lagging > 0)
+    r.notes.push_back("G_ss leaves out " + std::to_string(lagging) +
+                      " steady-state advance(s) where the tip lagged the loading (J_tip above " +
+                      fmt(lag_tolerance) + " x the set value; see the J_tip column)");
   r.reached_steady_state = count > 0;
   r.G_ss = count > 0 ? sum / count : law::not_available;
   if (count == 0)

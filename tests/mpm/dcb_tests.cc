@@ -80,6 +80,41 @@ TEST(MpmDcb, StationaryCrackJIsPathIndependentAndEnergyBalances) {
               balance / W, model.load() / P_cbt);
 }
 
+// Cell-size convergence of the load-point response: the stationary crack's stiffness (load over
+// load-line opening after 8 arm periods of quasi-static loading) against corrected beam theory
+// at 5, 2.5 and 1.25 mm cells (2, 4 and 8 cells per arm). Measured: +12.4, +3.4, -0.5 %, an
+// observed order of 1.2 (the tip column makes the crack act about 0.3 cell shorter: first
+// order), extrapolated limit -3.6 %. CBT is not the exact answer: the serial FEM on the same
+// specimen measures -1.1 % at 1 mm and -1.6 % at 0.5 mm elements (stiffness at initiation), and
+// the MPM's load, a moving average of the reaction, lags the rising load by about 0.7 %; the
+// limits then agree to about 1 %. That limit is not asserted (it rests on an extrapolation).
+// Asserted: the error falls in magnitude at each level, with an order of at least 0.7 (a scheme
+// that stopped converging, e.g. a load line or tip fixed in cells, gives about 0).
+TEST(MpmDcb, StationaryLoadPointResponseConvergesWithTheCell) {
+  const law::Specimen s = small_specimen();
+  const law::Material m;
+  const law::NoBridgingLaw none;
+  std::vector<double> error;
+  for (const double cell : {5e-3, 2.5e-3, 1.25e-3}) {
+    MpmParameters p = coarse();
+    p.cell_size = cell;
+    DcbModel model(s, m, none, 200, p);
+    const double T = 8 * model.vibration_period();
+    while (model.solver().time() < T)
+      ASSERT_TRUE(model.step(false));
+    const double stiffness_cbt = 1 / law::cbt_opening(s, m, 1.0, s.initial_crack);
+    error.push_back(model.load() / model.load_point_opening() / stiffness_cbt - 1);
+  }
+  const double order = std::log2((error[0] - error[1]) / (error[1] - error[2]));
+  const double limit = error[2] - (error[1] - error[2]) / (std::pow(2.0, order) - 1);
+  std::printf("stationary stiffness vs CBT: %+.4f %+.4f %+.4f at 5, 2.5, 1.25 mm; order %.2f, "
+              "extrapolated %+.4f\n",
+              error[0], error[1], error[2], order, limit);
+  EXPECT_LT(std::fabs(error[1]), std::fabs(error[0]));
+  EXPECT_LT(std::fabs(error[2]), std::fabs(error[1]));
+  EXPECT_GT(order, 0.7);
+}
+
 TEST(MpmDcb, ParallelParticleLoopsGiveTheSameResponse) {
   // Two threads split the scatter to the grid into coloured blocks of particle columns (and,
   // without OpenMP, still run that blocked path serially): only the order of the sums changes.
