@@ -155,8 +155,9 @@ namespace {
 /// The propagation runs load 4x slower than the default: quasi-static growth, where the result
 /// no longer depends on the growth criterion's J window (linear softening, G_ss for windows of
 /// 0.25, 0.35 and 0.5 arm periods: -2.3, -2.4, -2.1 %; at the default 8 loading periods the
-/// loading rate cuts the window at some advances and G_ss moved between -1.7 and -4.9 % with
-/// the window rule). A verification run should measure the discretization, not the rate.
+/// loading rate cuts the window at some advances and G_ss moved between -0.6 and -6.0 % with
+/// the window rule, docs/verification.md). A verification run should measure the
+/// discretization, not the rate.
 MpmParameters quasi_static() {
   MpmParameters p = coarse();
   p.loading_periods = 32;
