@@ -24,13 +24,12 @@ template <>
 SymmetricTensor<4, 2> orthotropic_stiffness<2>(const law::Material& m,
                                                const FemParameters& /* 3D shear moduli only */) {
   constexpr int dim = 2;
-  const auto [s11, s22, s12] = law::in_plane_compliance(m);
-  const double det = s11 * s22 - s12 * s12;
+  const auto [q11, q22, q12] = law::in_plane_stiffness(m);
   SymmetricTensor<4, dim> C;
-  C[0][0][0][0] = s22 / det;
-  C[1][1][1][1] = s11 / det;
-  C[0][0][1][1] = -s12 / det;
-  C[1][1][0][0] = -s12 / det;
+  C[0][0][0][0] = q11;
+  C[1][1][1][1] = q22;
+  C[0][0][1][1] = q12;
+  C[1][1][0][0] = q12;
   C[0][1][0][1] = m.G_LT; // sigma_xy = 2 C_0101 eps_xy = G_LT gamma_xy
   return C;
 }

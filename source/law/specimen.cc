@@ -27,7 +27,7 @@ void Material::validate(const std::string& c) const {
     throw InputError(c + "/nu_LR, nu_RT: must be >= 0");
 }
 
-InPlaneCompliance in_plane_compliance(const Material& m, const std::string& c) {
+InPlaneCompliance in_plane_compliance(const Material& m) {
   InPlaneCompliance s;
   s.s11 = 1 / m.E_L;
   s.s22 = 1 / m.E_T;
@@ -40,11 +40,16 @@ InPlaneCompliance in_plane_compliance(const Material& m, const std::string& c) {
     s.s12 -= s13 * s23 / s33;
   }
   if (!(s.s11 > 0 && s.s22 > 0 && s.s11 * s.s22 - s.s12 * s.s12 > 0))
-    throw InputError(c +
-                     ": the in-plane orthotropic compliance is not positive definite; check "
-                     "nu_LT" +
+    throw InputError("Material: the in-plane orthotropic compliance is not positive definite; "
+                     "check nu_LT" +
                      std::string(m.plane_stress ? "" : ", nu_LR, nu_RT and E_R over E_L"));
   return s;
+}
+
+InPlaneStiffness in_plane_stiffness(const Material& m) {
+  const InPlaneCompliance s = in_plane_compliance(m);
+  const double det = s.s11 * s.s22 - s.s12 * s.s12;
+  return {s.s22 / det, s.s11 / det, -s.s12 / det};
 }
 
 double cbt_chi(const Material& m) {

@@ -11,11 +11,10 @@ OrthotropicElastic::OrthotropicElastic(const law::Material& m) {
   m.validate("Material");
   // Reduced in-plane stiffness (grain along x), the inverse of the compliance the FEM uses:
   // plane stress, or plane strain with the radial constants (sigma_zz does no work there).
-  const law::InPlaneCompliance s = law::in_plane_compliance(m);
-  const double det = s.s11 * s.s22 - s.s12 * s.s12;
-  q11_ = s.s22 / det;
-  q22_ = s.s11 / det;
-  q12_ = -s.s12 / det;
+  const law::InPlaneStiffness q = law::in_plane_stiffness(m);
+  q11_ = q.q11;
+  q22_ = q.q22;
+  q12_ = q.q12;
   q66_ = m.G_LT;
   density_ = m.density;
 }

@@ -39,7 +39,13 @@ struct Material {
 struct InPlaneCompliance {
   double s11 = 0, s22 = 0, s12 = 0;
 };
-InPlaneCompliance in_plane_compliance(const Material& m, const std::string& context = "Material");
+InPlaneCompliance in_plane_compliance(const Material& m);
+/// Its inverse, sigma = Q eps (reduced stiffness: sig_xx = q11 eps_xx + q12 eps_yy; the shear
+/// modulus G_LT is unaffected by the reduction).
+struct InPlaneStiffness {
+  double q11 = 0, q22 = 0, q12 = 0;
+};
+InPlaneStiffness in_plane_stiffness(const Material& m);
 
 /// Corrected-beam-theory length correction chi (notes/verification.md; Hashemi, Kinloch, Williams
 /// 1990): a -> a + chi h, chi = sqrt((E11/(11 G13)) (3 - 2 (Gamma/(1+Gamma))^2)),

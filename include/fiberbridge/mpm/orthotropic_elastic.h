@@ -8,7 +8,7 @@ namespace fiberbridge::mpm {
 
 class OrthotropicElastic {
 public:
-  /// Plane stress or plane strain (law::in_plane_compliance); a compliance that is not positive
+  /// Plane stress or plane strain (law::in_plane_stiffness); a compliance that is not positive
   /// definite throws InputError.
   explicit OrthotropicElastic(const law::Material& m);
 
