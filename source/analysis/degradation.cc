@@ -1,5 +1,5 @@
 // Degradation statistics, durability ranking and Table-1 row consistency (seed section 3.3,
-// Table 1; DESIGN.md section 1 "Degradation and ranking").
+// Table 1; docs/design.md section 1 "Degradation and ranking").
 #include "fiberbridge/analysis/degradation.h"
 
 #include "fiberbridge/core/csv.h"
@@ -400,7 +400,7 @@ std::vector<ConsistencyIssue> check_row_consistency(const PropertyTable& table, 
       const double a = s1->values[i], b = s2->values[i], p1 = j1->values[i], p2 = j2->values[i];
       if (!(std::isfinite(a) && std::isfinite(b) && std::isfinite(p1) && std::isfinite(p2)))
         continue;
-      // kPa * mm = J/m^2. Trilinear split (DESIGN.md section 1; Table 1 uses '-' in J1).
+      // kPa * mm = J/m^2. Trilinear split (docs/design.md section 1; Table 1 uses '-' in J1).
       const double e1 = 0.5 * (a * d2_mm - b * d1_mm);
       const double e2 = 0.5 * b * dc;
       // Rounding of the printed digits: J itself, plus the stresses propagated through the

@@ -1,4 +1,5 @@
-// Reading measured R curves and averaging replicates (DESIGN.md section 1, "Data preparation").
+// Reading measured R curves and averaging replicates
+// (docs/design.md section 1, "Data preparation").
 #include "fiberbridge/analysis/rdelta_data.h"
 
 #include "fiberbridge/analysis/line_fit.h"

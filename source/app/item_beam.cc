@@ -1,4 +1,4 @@
-// Scene item "beam": the fast beam model of the DCB (DESIGN.md section 2), section "Beam".
+// Scene item "beam": the fast beam model of the DCB (docs/design.md section 2), section "Beam".
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/scene_context.h"
 #include "fiberbridge/beam/dcb_beam.h"

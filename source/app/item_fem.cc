@@ -1,5 +1,5 @@
-// Scene item "fem": the deal.II DCB model (DESIGN.md section 2). Reads the FEM section, runs the
-// simulation with the scene's specimen, material, law and J_tip, and reports through the common
+// Scene item "fem": the deal.II DCB model (docs/design.md section 2). Reads the FEM section, runs
+// the simulation with the scene's specimen, material, law and J_tip, and reports through the common
 // simulation writer.
 //
 // Engines (FEM/Engine, issue 6): the serial 2D engine (simulate_dcb) or the distributed 2D/3D

@@ -1,4 +1,4 @@
-// Scene item "mpm": the explicit MPM model of the DCB (DESIGN.md section 2), section "MPM".
+// Scene item "mpm": the explicit MPM model of the DCB (docs/design.md section 2), section "MPM".
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/scene_context.h"
 #include "fiberbridge/core/units.h"

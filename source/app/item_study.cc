@@ -125,7 +125,7 @@ struct Case {
   std::string only_model = {}; ///< non-empty: the case concerns this model only
 };
 
-/// DESIGN.md section 3 "Stability on stiff and extreme cases".
+/// docs/design.md section 3 "Stability on stiff and extreme cases".
 std::vector<Case> stability_cases() {
   return {
       {"stiff_initial_slope",

@@ -176,7 +176,8 @@ void run_fit_item(SceneContext& ctx) {
   o.d2_max = prm.get_double("Delta 2 maximum") * mm;
   prm.leave_subsection();
   const auto fit = run_trilinear_fit(*ctx.extraction, o, ctx.output_dir, ctx.summary);
-  // The extracted law is handed to the simulations without being retyped (DESIGN.md section 5).
+  // The extracted law is handed to the simulations without being retyped
+  // (docs/design.md section 5).
   ctx.fitted_law = std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(fit.law));
   ctx.fitted_j_tip = ctx.extraction->steady.j_tip;
   plot_extraction(*ctx.extraction, &fit, ctx.output_dir, ctx.summary);

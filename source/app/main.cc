@@ -1,4 +1,4 @@
-// fiberbridge: the command line (DESIGN.md section 5). Every command exits 0 on success and
+// fiberbridge: the command line (docs/design.md section 5). Every command exits 0 on success and
 // non-zero with a one-line reason on stderr otherwise.
 #include "fiberbridge/analysis/synthetic_data.h"
 #include "fiberbridge/app/analysis_steps.h"

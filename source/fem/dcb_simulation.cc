@@ -7,7 +7,7 @@
 //
 // Choices (see also the header):
 // - Crack plane doubled: the two arms are separate meshes on a vertex list of our own, so
-//   create_triangulation never merges the crack-plane vertices (notes/dealii-9.4.md).
+//   create_triangulation never merges the crack-plane vertices (docs/design.md section 7).
 // - Ahead of the tip the arms are tied by AffineConstraints (u_top = u_bottom per support point
 //   pair): exact, no penalty to tune, and release is removing a constraint line.
 // - Tip criterion: a domain J integral over a full-height strip around the tip, with the
@@ -21,7 +21,7 @@
 // - Nonlinear solver (FEM/Nonlinear solver): our own Newton with backtracking line search on the
 //   condensed residual (default), or SUNDIALS KINSOL with its line search on the same residual,
 //   Jacobian and linear solves. The release-library KINSOL does not report failure
-//   (notes/dealii-9.4.md): its result is re-checked against the same convergence test, and a
+//   (docs/design.md section 7): its result is re-checked against the same convergence test, and a
 //   failure becomes the same ComputationError diagnosis as a Newton failure.
 // - Linear solves (FEM/Linear solver): Trilinos Amesos KLU (default) or UMFPACK, one
 //   factorization per release; between releases the interface points that change branch enter

@@ -977,7 +977,7 @@ bool DistributedDcbModel<dim>::kinsol(double opening, std::string& diagnosis) {
   // SUNDIALS KINSOL on TrilinosWrappers::MPI::Vector (its N_Vector wrapper reduces over the
   // vectors' communicator): the serial engine's setup, on the same condensed residual, Jacobian
   // and linear solves as newton(). The release library does not report a failed solve
-  // (notes/dealii-9.4.md): the result is re-checked against the Newton test here.
+  // (docs/design.md section 7): the result is re-checked against the Newton test here.
   predict(opening);
   Vec r(owned_, comm_), rf(owned_, comm_);
   assemble_residual(u_, r, rf);

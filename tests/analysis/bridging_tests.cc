@@ -201,7 +201,8 @@ TEST(Bridging, Table1UpperBoundsFollowFromEq15WithTracheidProperties) {
     }
   }
   EXPECT_EQ(checked, 20);
-  // The two anchors of DESIGN.md: PVA control 111, EPI control 124 per mm^2.
+  // The two anchors of docs/design.md section 1, "Fiber-bridging model": PVA control 111, EPI
+  // control 124 per mm^2.
   EXPECT_NEAR(rho_per_mm2(661, 6.7, f), 111.4, 0.05);
   EXPECT_NEAR(rho_per_mm2(579, 8.5, f), 123.8, 0.05);
   // Eq. 13 (breaking, 648 MPa) would give 2.4 % less; the exact Eq. 11 + 14 form 12 % more (its

@@ -1,5 +1,5 @@
 // Degradation statistics, ranking and row consistency against the seed's Table 1 (seed section
-// 3.3; DESIGN.md section 1 "Degradation and ranking").
+// 3.3; docs/design.md section 1 "Degradation and ranking").
 #include "fiberbridge/analysis/degradation.h"
 #include "fiberbridge/core/error.h"
 
@@ -139,7 +139,8 @@ TEST(Degradation, EveryPrintedSlopeAndR2IsReproducedExceptTheDf16Misprints) {
   EXPECT_EQ(with_printed, 20);
   EXPECT_EQ(mismatched, (std::set<std::string>{"DF J1", "DF sigma2"}));
 
-  // The DESIGN's anchor: PVA sigma1 -17.5/cycle, R^2 0.949 (printed 0.94, i.e. truncated).
+  // The anchor of docs/design.md section 1: PVA sigma1 -17.5/cycle, R^2 0.949 (printed 0.94, i.e.
+  // truncated).
   const auto& pva = row_of(rows, "PVA", "sigma1");
   EXPECT_NEAR(pva.fit.slope, -17.5125, 1e-12);
   EXPECT_NEAR(pva.fit.r2, 0.94936, 5e-6); // hand value 31404816/33079920 to 5 digits

@@ -1,5 +1,5 @@
 // Eq. 6 (seed section 2.3), its Eq. 7 special case, the round trip law -> Eq. 2 -> Eq. 6 -> law
-// with its observed order, and the old sigma = R' method's peak error (DESIGN.md section 3).
+// with its observed order, and the old sigma = R' method's peak error (docs/design.md section 3).
 #include "fiberbridge/analysis/inverse.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"

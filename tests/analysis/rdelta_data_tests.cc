@@ -1,4 +1,4 @@
-// Data preparation (DESIGN.md section 1): reading measured R curves, synthetic replicates,
+// Data preparation (docs/design.md section 1): reading measured R curves, synthetic replicates,
 // averaging, and the steady-state criterion of steady_state.h.
 #include "fiberbridge/analysis/rdelta_data.h"
 #include "fiberbridge/analysis/steady_state.h"

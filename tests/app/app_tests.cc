@@ -1,6 +1,6 @@
 // Scene-level tests of the fiberbridge executable: commands on bundled data produce the outputs
-// DESIGN.md section 5 names, and every kind of bad input ends with a one-line reason, a non-zero
-// exit and no summary.json.
+// docs/design.md section 5 names, and every kind of bad input ends with a one-line reason, a
+// non-zero exit and no summary.json.
 #include "fiberbridge/core/summary.h"
 
 #include <gtest/gtest.h>
@@ -294,7 +294,8 @@ TEST(Scenes, BeamAgreesWithFemOnLinearSoftening) {
     // 1 % allows for that.
     EXPECT_LT(std::abs(d["plateau_rel_diff"].get<double>()), 0.01);
     // Peak load: CBT-calibrated beam vs 2D orthotropic FEM, measured 3.1 %; corrected beam theory
-    // itself is good to ~2 % against fine FE (notes/verification.md), so 5 %.
+    // itself is good to ~2 % against fine FE (docs/design.md section 3, "Reference formulas"),
+    // so 5 %.
     EXPECT_LT(std::abs(d["peak_load_rel_diff"].get<double>()), 0.05);
     // R_J as a function of delta_root is specimen-independent (Eq. 2): measured 0.15 %.
     if (d["quantity"] == "R_J(delta_root)")

@@ -1,4 +1,4 @@
-// Unit and verification tests of the beam model of the DCB (DESIGN.md sections 2 and 3).
+// Unit and verification tests of the beam model of the DCB (docs/design.md sections 2 and 3).
 #include "banded_lu.h" // private to the beam library: tests/beam/CMakeLists.txt adds its path
 #include "fiberbridge/beam/arm_on_foundation.h"
 #include "fiberbridge/beam/dcb_beam.h"
@@ -283,8 +283,9 @@ TEST(BeamLinearSoftening, RJFollowsTheAnalyticRCurveWhileTheZoneDevelops) {
     max_rel_bridging_excess =
         std::max(max_rel_bridging_excess, (q.R_energy - q.R_eq2) / (q.R_eq2 - j_tip));
   }
-  // The energy-based R exceeds Eq. 2 while the zone grows (not self-similar): DESIGN expects a
-  // few per cent; a bridging part off by more than 10 % would point at an energy error.
+  // The energy-based R exceeds Eq. 2 while the zone grows (not self-similar): docs/design.md
+  // section 2 expects a few per cent; a bridging part off by more than 10 % would point at an
+  // energy error.
   std::printf("linear softening: max (R_energy - R_eq2)/(R_eq2 - J_tip) before the root moves "
               "= %.4f\n",
               max_rel_bridging_excess);
@@ -420,7 +421,8 @@ TEST(BeamPva, ControlTrilinearLawOnTheSeedSpecimen) {
     std::printf("  note: %s\n", n.c_str());
   // R_J after the root moved is Eq. 1 at delta_c: J_tip + J_c up to the zone quadrature.
   EXPECT_NEAR(mv.R_J / g_ss, 1.0, 1e-3);
-  // DESIGN: R_energy differs from Eq. 2 by a few per cent while the zone develops.
+  // docs/design.md section 2: R_energy differs from Eq. 2 by a few per cent while the zone
+  // develops.
   EXPECT_GT(max_dev, 0.0);
   EXPECT_LT(max_dev, 0.10);
   EXPECT_NEAR(r.G_ss / g_ss, 1.0, 1e-3);

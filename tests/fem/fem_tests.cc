@@ -1,5 +1,6 @@
-// Verification of the deal.II DCB model (DESIGN.md section 3). Coarse meshes on a short specimen
-// so that each test takes a few seconds in Release; every tolerance says where it comes from.
+// Verification of the deal.II DCB model (docs/design.md section 3). Coarse meshes on a short
+// specimen so that each test takes a few seconds in Release; every tolerance says where it comes
+// from.
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/fem/cohesive_interface.h"
@@ -114,8 +115,9 @@ TEST(FemDcb, LefmFollowsCorrectedBeamTheory) {
   const double chi_h = law::cbt_chi(wood) * spec.arm_thickness();
   for (const auto& p : r.rcurve) {
     // CBT is itself an approximation of 2D orthotropic elasticity, good to about 2 % for fine
-    // meshes (notes/verification.md); on this mesh the difference measured 0.6 %. 1.5 % fails
-    // for a wrong stiffness, a wrong tip criterion (P ~ sqrt(J)) or a wrong load line.
+    // meshes (docs/design.md section 3, "Reference formulas"); on this mesh the difference measured
+    // 0.6 %. 1.5 % fails for a wrong stiffness, a wrong tip criterion (P ~ sqrt(J)) or a wrong load
+    // line.
     EXPECT_NEAR(p.load / law::cbt_load_at_crack_length(spec, wood, j_tip, p.a), 1.0, 0.015)
         << "a = " << p.a / mm << " mm";
     // Tip J is the criterion (within its tolerance); the far-field J measures the same

@@ -1,4 +1,4 @@
-// Unit tests of the traction laws and of Eq. 2 (DESIGN.md section 1).
+// Unit tests of the traction laws and of Eq. 2 (docs/design.md section 1).
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/exponential_law.h"
@@ -131,7 +131,7 @@ TEST(Law, BadLawsAreRejectedWithReasons) {
 }
 
 TEST(Specimen, CorrectedBeamTheoryChiIsotropic) {
-  // notes/verification.md: isotropic, nu = 0.3 gives chi ~ 0.66.
+  // docs/design.md section 3, "Reference formulas": isotropic, nu = 0.3 gives chi ~ 0.66.
   Material m;
   m.E_L = m.E_T = 10e9;
   m.G_LT = 10e9 / 2.6;

@@ -1,6 +1,6 @@
 #pragma once
 // Degradation statistics vs. moisture cycles and the durability ranking (seed section 3.3,
-// Table 1; DESIGN.md section 1 "Degradation and ranking").
+// Table 1; docs/design.md section 1 "Degradation and ranking").
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -98,7 +98,7 @@ struct MaterialRank {
 std::vector<MaterialRank> rank_materials(const std::vector<DegradationRow>& rows);
 
 /// A row whose J_1 or J_2 does not follow from its sigma_1, sigma_2 (J_1 = (s1 d2 - s2 d1)/2,
-/// J_2 = s2 dc/2, DESIGN.md section 1).
+/// J_2 = s2 dc/2, docs/design.md section 1).
 struct ConsistencyIssue {
   std::string material;
   double cycles = 0;

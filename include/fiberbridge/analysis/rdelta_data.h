@@ -1,6 +1,6 @@
 #pragma once
 // Measured R curves: reading, converting R(a) to R(delta) and averaging replicates
-// (DESIGN.md section 1, "Data preparation"). SI inside: delta in m, R in J/m^2.
+// (docs/design.md section 1, "Data preparation"). SI inside: delta in m, R in J/m^2.
 #include <string>
 #include <vector>
 
@@ -8,11 +8,11 @@ namespace fiberbridge::analysis {
 
 /// One replicate as read: rows in time order (or file order when there is no time column).
 struct Replicate {
-  std::string label;          ///< value of the `replicate` column, or "1"
-  std::vector<double> time_s; ///< empty when the file has no time_s column
-  std::vector<double> a;      ///< crack-tip position [m]; empty when no a_mm column
-  std::vector<double> delta;  ///< notch-root opening [m]
-  std::vector<double> R;      ///< [J/m^2]
+  std::string label;             ///< value of the `replicate` column, or "1"
+  std::vector<double> time_s;    ///< empty when the file has no time_s column
+  std::vector<double> a;         ///< crack-tip position [m]; empty when no a_mm column
+  std::vector<double> delta;     ///< notch-root opening [m]
+  std::vector<double> R;         ///< [J/m^2]
   std::vector<std::size_t> line; ///< file line of each row (for messages)
 };
 
@@ -34,7 +34,7 @@ struct RDeltaCurve {
   std::vector<double> R;     ///< [J/m^2]
   std::vector<double> R_std; ///< standard deviation over replicates at each grid point (0 for one)
   int n_replicates = 1;
-  std::string report;        ///< what was done (grid, range, replicates), for summary.json
+  std::string report; ///< what was done (grid, range, replicates), for summary.json
 };
 
 /// Averages replicates on a common uniform grid of `n_grid` points over [0, min over replicates

@@ -27,8 +27,8 @@ struct ExtractionOutcome {
 };
 
 /// Reads, averages, finds the steady state, extracts Eq. 6 and R' laws; writes rdelta_averaged.csv,
-/// cohesive_law_eq5.csv, cohesive_law_dRdd.csv; adds the top-level keys of DESIGN.md section 5 to
-/// `summary` (J_tip_J_m2, G_ss_J_m2, delta_c_mm, peak_sigma_eq5_kPa, peak_sigma_dRdd_kPa,
+/// cohesive_law_eq5.csv, cohesive_law_dRdd.csv; adds the top-level keys of docs/design.md section 5
+/// to `summary` (J_tip_J_m2, G_ss_J_m2, delta_c_mm, peak_sigma_eq5_kPa, peak_sigma_dRdd_kPa,
 /// extract{}).
 ExtractionOutcome run_extraction(const ExtractionOptions& o, const std::string& out_dir,
                                  Json& summary);

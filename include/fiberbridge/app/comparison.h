@@ -1,7 +1,7 @@
 #pragma once
 // Comparing simulations with each other and closing the loop through the extraction method
-// (DESIGN.md section 3; issue "Cross-validation and studies"). Plain functions of SimulationResult
-// so that they can be tested without running a model.
+// (docs/design.md section 3; issue "Cross-validation and studies"). Plain functions of
+// SimulationResult so that they can be tested without running a model.
 #include "fiberbridge/analysis/inverse.h"
 #include "fiberbridge/law/rcurve.h"
 #include "fiberbridge/law/traction_law.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Running a .prm scene (DESIGN.md section 5): declare every section, parse the file (unknown
+// Running a .prm scene (docs/design.md section 5): declare every section, parse the file (unknown
 // entries are errors), apply --set overrides, then run only the items listed in `Run`.
 #include <nlohmann/json.hpp>
 

@@ -59,9 +59,9 @@ struct SceneItem {
 /// The registry, in the order items run when a scene lists them.
 const std::vector<SceneItem>& scene_items();
 
-/// Common writer for a simulation item: rcurve_<model>.csv, the summary block (DESIGN.md section
-/// 5: G_ss_J_m2, wall_time_s, n_dofs or n_particles, rdelta_rel_error_vs_eq2, notes) and an R(a)
-/// PNG. Every simulation item calls this once with its result.
+/// Common writer for a simulation item: rcurve_<model>.csv, the summary block (docs/design.md
+/// section 5: G_ss_J_m2, wall_time_s, n_dofs or n_particles, rdelta_rel_error_vs_eq2, notes) and an
+/// R(a) PNG. Every simulation item calls this once with its result.
 void report_simulation(SceneContext& ctx, law::SimulationResult result,
                        const std::string& size_key /* "n_dofs" or "n_particles" or "n_elements" */);
 

@@ -1,5 +1,5 @@
 #pragma once
-// The fast beam model of the DCB with a bridging zone (DESIGN.md section 2, "Beam model").
+// The fast beam model of the DCB with a bridging zone (docs/design.md section 2, "Beam model").
 //
 // One arm by symmetry (the crack plane is the symmetry line, opening delta = 2 w): a Timoshenko
 // beam from the load line x = 0 to the far end x = L. The sawn notch [0, a0] is free; behind the

@@ -1,6 +1,6 @@
 #pragma once
 // The crack-plane interface of the DCB model without any deal.II type, so that the cohesive
-// mechanics can be tested on their own (DESIGN.md section 3: a single interface element under
+// mechanics can be tested on their own (docs/design.md section 3: a single interface element under
 // load/unload cycles dissipates exactly the law's area).
 //
 // The crack plane is a row of integration points with an opening each (the FE model

@@ -1,6 +1,6 @@
 #pragma once
 // deal.II finite-element model of the DCB specimen with cohesive segments inserted dynamically at
-// the propagating crack tip (DESIGN.md section 2, "FEM").
+// the propagating crack tip (docs/design.md section 2, "FEM").
 //
 // Geometry: the beam runs from x = 0 to x = Length; the load line is the left end face x = 0
 // (no overhang), where the two arms are pulled apart by prescribed vertical displacements

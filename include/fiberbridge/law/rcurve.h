@@ -1,6 +1,6 @@
 #pragma once
 // What every specimen simulation (fem, mpm, beam) returns: a plain struct, written by one writer.
-// DESIGN.md section 2: three R curves per simulation, never one computed from the answer.
+// docs/design.md section 2: three R curves per simulation, never one computed from the answer.
 #include <cmath>
 #include <limits>
 #include <string>
@@ -44,7 +44,7 @@ struct SimulationResult {
   std::vector<std::string> method; ///< how the model computes its columns (for the report)
 };
 
-/// rcurve_<model>.csv with the columns of DESIGN.md section 5 (mm, N, J/m^2, J per m width).
+/// rcurve_<model>.csv with the columns of docs/design.md section 5 (mm, N, J/m^2, J per m width).
 void write_rcurve_csv(const std::string& path, const SimulationResult& result);
 
 /// Relative L2 difference between R_J (or R_eq2 if R_J is absent) and Eq. 2 of `law`, over the

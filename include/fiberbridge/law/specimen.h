@@ -47,9 +47,10 @@ struct InPlaneStiffness {
 };
 InPlaneStiffness in_plane_stiffness(const Material& m);
 
-/// Corrected-beam-theory length correction chi (notes/verification.md; Hashemi, Kinloch, Williams
-/// 1990): a -> a + chi h, chi = sqrt((E11/(11 G13)) (3 - 2 (Gamma/(1+Gamma))^2)),
-/// Gamma = 1.18 sqrt(E11 E22)/G13, with E11 = E_L, E22 = E_T, G13 = G_LT.
+/// Corrected-beam-theory length correction chi (docs/design.md section 3, "Reference formulas";
+/// Hashemi, Kinloch, Williams 1990): a -> a + chi h,
+/// chi = sqrt((E11/(11 G13)) (3 - 2 (Gamma/(1+Gamma))^2)), Gamma = 1.18 sqrt(E11 E22)/G13,
+/// with E11 = E_L, E22 = E_T, G13 = G_LT.
 double cbt_chi(const Material& m);
 
 /// LEFM DCB under displacement control with G = J_tip (plane stress, E = E_L): load for the whole

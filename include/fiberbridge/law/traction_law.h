@@ -1,6 +1,6 @@
 #pragma once
-// Bridging traction laws sigma(delta) (DESIGN.md section 1). SI units: opening in m, traction in
-// Pa, energies per unit crack area in J/m^2.
+// Bridging traction laws sigma(delta) (docs/design.md section 1). SI units: opening in m, traction
+// in Pa, energies per unit crack area in J/m^2.
 //
 // A law is its monotonic-loading envelope. History (unloading to the origin: an elastic-damage
 // zone, seed Fig. 1B) and contact in closing are handled once, in respond(), for every law.

@@ -1,7 +1,7 @@
 #pragma once
 // The DCB specimen in explicit MPM: two arms joined ahead of an explicit mid-plane crack, opened by
 // a slow prescribed velocity at the load line; the tip grows by a fixed step whenever its J
-// reaches J_tip and leaves a fresh bridging segment behind (DESIGN.md section 2, "MPM").
+// reaches J_tip and leaves a fresh bridging segment behind (docs/design.md section 2, "MPM").
 #include "fiberbridge/law/rcurve.h"
 #include "fiberbridge/law/specimen.h"
 #include "fiberbridge/law/traction_law.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Parameters of the explicit MPM model of the DCB specimen (DESIGN.md section 2, "MPM").
+// Parameters of the explicit MPM model of the DCB specimen (docs/design.md section 2, "MPM").
 
 namespace fiberbridge::mpm {
 
