@@ -54,6 +54,12 @@ void declare_beam_section(dealii::ParameterHandler& prm) {
                     "at which Newton stops.");
   prm.declare_entry("Newton iterations", std::to_string(d.max_newton_iterations), Integer(1, 10000),
                     "Newton iterations per tip position before giving up.");
+  prm.declare_entry("Kinematics", "small", dealii::Patterns::Selection("small|finite"),
+                    "small: linear beam theory. finite: the load and the load-point opening "
+                    "come from the elastica of the free arm (load line to tip) at the "
+                    "small-rotation tip moment, so the load's lever arm shortens as the arm "
+                    "rotates (thin arms, openings past a tenth of the crack length). Small-"
+                    "rotation runs say in their notes when the load is more than 1 % off.");
   prm.leave_subsection();
 }
 
@@ -71,6 +77,7 @@ beam::BeamParameters parse_beam_section(dealii::ParameterHandler& prm) {
   p.plateau_tolerance = prm.get_double("Plateau tolerance");
   p.newton_tolerance = prm.get_double("Newton tolerance");
   p.max_newton_iterations = prm.get_integer("Newton iterations");
+  p.finite_rotations = prm.get("Kinematics") == "finite";
   prm.leave_subsection();
   p.validate("Beam");
   return p;
