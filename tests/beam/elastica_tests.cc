@@ -72,6 +72,19 @@ law::Material composite_material() {
   return m;
 }
 
+/// The same LEFM run with small and with finite rotations.
+struct SmallAndFinite {
+  law::SimulationResult small, finite;
+};
+SmallAndFinite run_both(const law::Specimen& s, const law::Material& m, double j,
+                        BeamParameters p) {
+  SmallAndFinite r;
+  r.small = simulate_dcb(s, m, law::NoBridgingLaw{}, j, p);
+  p.finite_rotations = true;
+  r.finite = simulate_dcb(s, m, law::NoBridgingLaw{}, j, p);
+  return r;
+}
+
 } // namespace
 
 TEST(Elastica, MatchesBisshoppDruckerCantilever) {
@@ -127,9 +140,7 @@ TEST(BeamFiniteRotations, LoadAndOpeningFollowTheClampedElastica) {
   p.n_elements = 3200;
   p.max_advances = 1;
   const double j = 500 * std::pow(0.5 / 0.109, 2); // 0.109 at 500 J/m^2 (measured)
-  const auto small = simulate_dcb(s, m, law::NoBridgingLaw{}, j, p);
-  p.finite_rotations = true;
-  const auto finite = simulate_dcb(s, m, law::NoBridgingLaw{}, j, p);
+  const auto [small, finite] = run_both(s, m, j, p);
   const double EI = m.E_L * s.width * std::pow(s.arm_thickness(), 3) / 12, a = s.initial_crack;
   const auto& qs = small.rcurve.front();
   const auto& qf = finite.rcurve.front();
@@ -164,9 +175,7 @@ TEST(BeamFiniteRotations, AgreesWithSmallRotationsAtSmallOpenings) {
   const law::Specimen s;
   const law::Material m;
   BeamParameters p;
-  const auto small = simulate_dcb(s, m, law::NoBridgingLaw{}, 200, p);
-  p.finite_rotations = true;
-  const auto finite = simulate_dcb(s, m, law::NoBridgingLaw{}, 200, p);
+  const auto [small, finite] = run_both(s, m, 200, p);
   ASSERT_EQ(small.rcurve.size(), finite.rcurve.size());
   for (std::size_t i = 0; i < small.rcurve.size(); ++i) {
     const auto& qs = small.rcurve[i];
@@ -192,9 +201,7 @@ TEST(BeamFiniteRotations, ThinArmsReleaseJtipAndSmallRotationsSaySo) {
   p.steady_state_window = 1.0;
   p.max_advances = 40;
   const double j = 500 * std::pow(0.3 / 0.109, 2);
-  const auto small = simulate_dcb(s, m, law::NoBridgingLaw{}, j, p);
-  p.finite_rotations = true;
-  const auto finite = simulate_dcb(s, m, law::NoBridgingLaw{}, j, p);
+  const auto [small, finite] = run_both(s, m, j, p);
   for (const auto& q : finite.rcurve)
     EXPECT_NEAR(q.R_energy / j, 1.0, 1e-3) << "a = " << q.a / mm;
   const bool said = std::any_of(small.notes.begin(), small.notes.end(), [](const std::string& n) {
