@@ -150,6 +150,25 @@ TEST(MpmDcb, RejectsUnusableInput) {
   EXPECT_THROW(DcbModel(s, law::Material{}, none, -1, coarse()), InputError);
 }
 
+TEST(MpmDcb, NotesArmsWithFewerThanThreeCellsThroughTheThickness) {
+  // 4 mm cells on a 10 mm arm: 2.5 cells, accepted (>= 2) but noted (under 3 the arm bends over
+  // 5 % too stiff, MpmCantilever.BendingNeedsCellsThroughTheThickness); 2.5 mm cells: 4, quiet.
+  const law::Specimen s = small_specimen();
+  const law::NoBridgingLaw none;
+  auto thin_arm_noted = [&](double cell) {
+    MpmParameters p = coarse();
+    p.cell_size = cell;
+    p.max_steps = 3; // the note is made at setup; no need to load
+    DcbModel model(s, law::Material{}, none, 200, p);
+    const auto r = model.run();
+    return std::any_of(r.notes.begin(), r.notes.end(), [](const std::string& n) {
+      return n.find("thin arm: MPM/Cell size") != std::string::npos;
+    });
+  };
+  EXPECT_TRUE(thin_arm_noted(4e-3));
+  EXPECT_FALSE(thin_arm_noted(2.5e-3));
+}
+
 namespace {
 
 /// The propagation runs load 4x slower than the default: quasi-static growth, where the result
