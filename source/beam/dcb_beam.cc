@@ -630,10 +630,14 @@ SimulationResult DcbBeamSolver::run() {
     const double ratio = p.load_point_opening / p.a;
     if (!prm_.finite_rotations && ratio > 0.1 && ratio > worst_ratio) {
       double finite_load = 0, unused = 0;
-      finite_free_arm(finite_load, unused);
-      worst_ratio = ratio;
-      worst_a = p.a;
-      worst_load_error = p.load / finite_load - 1;
+      // The check must not end a small-rotation run: a failed elastica only skips the note.
+      try {
+        finite_free_arm(finite_load, unused);
+        worst_ratio = ratio;
+        worst_a = p.a;
+        worst_load_error = p.load / finite_load - 1;
+      } catch (const ComputationError&) {
+      }
     }
 
     if (!moved && p.root > a0 + 1e-12 * L) {
