@@ -101,8 +101,8 @@ private:
   void commit_history();
   RCurvePoint measure_state() const;
   /// The free arm (load line to tip) of the current state at finite rotation: the load that
-  /// gives the same tip moment with the same tip rotation and bridging forces; `linear_energy`
-  /// gets the small-rotation strain energy of the same arm.
+  /// keeps the ligament's tip deflection (hence the tip J) with the same bridging forces;
+  /// `linear_energy` gets the small-rotation strain energy of the same arm.
   ElasticaState finite_free_arm(double& load, double& linear_energy) const;
   /// R_energy's plateau over the last steady-state window after the root moved at state
   /// `moved`, or NaN if the growth is not yet self-similar there.
@@ -625,8 +625,8 @@ SimulationResult DcbBeamSolver::run() {
     dissipation.push_back(work - p.strain_energy - p.zone_recoverable);
     result.rcurve.push_back(p);
     // Small rotations: measure the load error against the elastica at the state of largest
-    // opening per crack length (under a tenth the error is below 0.3 %, docs/verification.md,
-    // so those states are not checked).
+    // opening per crack length (under a tenth the error is about 0.15 % or less,
+    // docs/verification.md, so those states are not checked).
     const double ratio = p.load_point_opening / p.a;
     if (!prm_.finite_rotations && ratio > 0.1 && ratio > worst_ratio) {
       double finite_load = 0, unused = 0;
@@ -797,9 +797,10 @@ void DcbBeamSolver::finish(SimulationResult& result, const std::vector<double>& 
   if (prm_.finite_rotations)
     result.method.push_back(
         "finite rotations (Beam/Kinematics = finite): load and load-point opening from the "
-        "shearable elastica of the free arm (load line to tip) with the small-rotation tip "
-        "moment, tip rotation and bridging forces; strain energy with the elastica's free arm; "
-        "the tip, the ligament, R_J and J_ff are those of the small-rotation state");
+        "shearable elastica of the free arm (load line to tip) under the small-rotation "
+        "bridging forces, at the load that keeps the ligament's tip deflection (tip J); strain "
+        "energy with the elastica's free arm; the ligament, the bridging openings, R_J and J_ff "
+        "are those of the small-rotation state");
   if (!material_.plane_stress)
     note(result, "plane strain: the arms bend with E_L/(1 - nu_LT nu_TL)");
   result.rdelta_rel_error_vs_eq2 = law::rdelta_error_vs_eq2(result, *law_, j_tip_);

@@ -56,9 +56,10 @@ struct BeamParameters {
   /// Stop after this many recorded advances even if the ligament is long (safety net).
   int max_advances = 100000;
   /// Finite rotations of the free arm (Beam/Kinematics = finite): the load and the load-point
-  /// opening of each state come from the elastica of the arm between load line and tip with
-  /// the small-rotation state's tip moment, tip rotation and bridging forces (elastica.h). The
-  /// tip section, the ligament and the R curves stay those of the small-rotation state.
+  /// opening of each state come from the elastica of the arm between load line and tip
+  /// (elastica.h) under the small-rotation state's bridging forces, with the load that keeps the
+  /// ligament's tip deflection (so the tip J) through its semi-infinite end flexibility. The
+  /// ligament, the bridging openings, R_J and J_ff stay those of the small-rotation state.
   bool finite_rotations = false;
 
   void validate(const std::string& context = "Beam") const;
