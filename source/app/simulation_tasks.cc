@@ -33,9 +33,11 @@ Json run_simulations(SceneContext& ctx, const std::set<std::string>& wanted, MPI
     if (wanted.count(item.name) && cost_of(item.name) > 0 &&
         !(item.name == "fem" && fem_needs_all_ranks(*ctx.prm)))
       sims.push_back(&item);
-  Json block = {{"items", Json::array()}};
+  int n_ranks = 1;
+  MPI_Comm_size(comm, &n_ranks);
+  Json block = {{"ranks", n_ranks}, {"items", Json::array()}};
   if (sims.empty() || (sims.size() == 1 && sims[0]->name == "fem"))
-    return block;
+    return block; // one collective FEM run (or none): the items run as they are
 
   std::vector<double> cost;
   std::string names;
@@ -43,8 +45,6 @@ Json run_simulations(SceneContext& ctx, const std::set<std::string>& wanted, MPI
     cost.push_back(cost_of(s->name));
     names += (names.empty() ? "" : ", ") + s->name;
   }
-  int n_ranks = 1;
-  MPI_Comm_size(comm, &n_ranks);
   if (output_enabled())
     std::cerr << "fiberbridge: running " << names << " as independent tasks on " << n_ranks
               << " ranks\n";
@@ -77,7 +77,6 @@ Json run_simulations(SceneContext& ctx, const std::set<std::string>& wanted, MPI
     ctx.summary["item_wall_time_s"][name] = r["wall_time_s"];
     block["items"].push_back({{"item", name}, {"rank", done.rank[i]}});
   }
-  block["ranks"] = n_ranks;
   return block;
 }
 

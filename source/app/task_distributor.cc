@@ -176,6 +176,8 @@ TaskResults run_tasks_across_ranks(std::size_t n,
       if (done.back().status != ok)
         break;
     }
+    // Before the counter's MPI_Win_free, which is collective and would spin like the gather.
+    wait_for_all_without_spinning(comm);
   }
 
   std::string mine;
@@ -186,8 +188,6 @@ TaskResults run_tasks_across_ranks(std::size_t n,
     put(mine, static_cast<std::uint64_t>(d.text.size()));
     mine += d.text;
   }
-  if (n_ranks > 1)
-    wait_for_all_without_spinning(comm);
   const auto per_rank =
       n_ranks == 1 ? std::vector<std::string>{mine} : all_gather_bytes(mine, comm);
 
