@@ -391,6 +391,7 @@ void run_study_item(SceneContext& ctx) {
         law::SimulationResult r;
         double g_err, peak;
         int rank;
+        double cpu_s;
       };
       std::vector<Level> run_levels;
       for (std::size_t l = 0; l < ladder.levels; ++l, ++task) {
@@ -402,7 +403,7 @@ void run_study_item(SceneContext& ctx) {
         const double g_err = std::abs(r.G_ss - G_law) / G_law;
         run_levels.push_back({level_setting(ladder, l),
                               std::strtod(ladder.keys[0].second[l].c_str(), nullptr), std::move(r),
-                              g_err, peak, done.rank[task]});
+                              g_err, peak, done.rank[task], done.cpu_seconds[task]});
       }
       // Observed orders: p = log(e_l / e_{l+1}) / log(refinement factor); the peak load has no
       // exact value, so its order comes from three successive levels (constant factor assumed).
@@ -445,7 +446,8 @@ void run_study_item(SceneContext& ctx) {
                         {"observed_order_G_ss", json_number(p_g)},
                         {"observed_order_peak_load", json_number(p_p)},
                         {"reached_steady_state", L.r.reached_steady_state},
-                        {"rank", L.rank}});
+                        {"rank", L.rank},
+                        {"cpu_s", L.cpu_s}});
       }
       block["cheapest"][model] = cheapest < 0
                                      ? Json("no level reached " + std::to_string(target))
@@ -478,6 +480,7 @@ void run_study_item(SceneContext& ctx) {
              row["outcome"].get<std::string>(), row["diagnosis"].get<std::string>()},
             {row["wall_time_s"].get<double>()});
       row["rank"] = done.rank[first_case_task + k];
+      row["cpu_s"] = done.cpu_seconds[first_case_task + k];
       rows.push_back(std::move(row));
     }
     w.close();

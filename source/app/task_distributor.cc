@@ -11,6 +11,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <thread>
+#include <time.h>
 
 namespace fiberbridge::app {
 
@@ -35,7 +36,7 @@ enum Status : std::int32_t { ok = 0, input_error = 1, computation_error = 2, oth
 struct Done {
   std::uint64_t index;
   std::int32_t status;
-  double seconds;
+  double seconds, cpu_seconds;
   std::string text; ///< the result, or the error message
 };
 
@@ -51,20 +52,28 @@ T take(const char*& p) {
   return v;
 }
 
+double process_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
 Done run_one(std::size_t i, const std::function<std::string(std::size_t)>& task) {
   const auto t0 = std::chrono::steady_clock::now();
-  Done d{i, ok, 0.0, {}};
+  const double c0 = process_cpu_seconds();
+  Done d{i, ok, 0.0, 0.0, {}};
   try {
     SimulationCommScope scope(MPI_COMM_SELF);
     d.text = task(i);
   } catch (const InputError& e) {
-    d = {i, input_error, 0.0, e.what()};
+    d = {i, input_error, 0.0, 0.0, e.what()};
   } catch (const ComputationError& e) {
-    d = {i, computation_error, 0.0, e.what()};
+    d = {i, computation_error, 0.0, 0.0, e.what()};
   } catch (const std::exception& e) {
-    d = {i, other_error, 0.0, e.what()};
+    d = {i, other_error, 0.0, 0.0, e.what()};
   }
   d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  d.cpu_seconds = process_cpu_seconds() - c0;
   return d;
 }
 
@@ -185,6 +194,7 @@ TaskResults run_tasks_across_ranks(std::size_t n,
     put(mine, d.index);
     put(mine, d.status);
     put(mine, d.seconds);
+    put(mine, d.cpu_seconds);
     put(mine, static_cast<std::uint64_t>(d.text.size()));
     mine += d.text;
   }
@@ -195,6 +205,7 @@ TaskResults run_tasks_across_ranks(std::size_t n,
   res.output.resize(n);
   res.rank.assign(n, -1);
   res.seconds.assign(n, 0.0);
+  res.cpu_seconds.assign(n, 0.0);
   std::vector<std::int32_t> status(n, ok);
   for (int r = 0; r < n_ranks; ++r) {
     const char* p = per_rank[r].data();
@@ -203,6 +214,7 @@ TaskResults run_tasks_across_ranks(std::size_t n,
       const auto i = take<std::uint64_t>(p);
       status[i] = take<std::int32_t>(p);
       res.seconds[i] = take<double>(p);
+      res.cpu_seconds[i] = take<double>(p);
       const auto len = take<std::uint64_t>(p);
       res.output[i].assign(p, len);
       p += len;

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <string>
 #include <thread>
 
@@ -105,6 +106,23 @@ TEST(TaskDistributor, SlowTasksAreShared) {
     ++per_rank[k];
   for (int k = 0; k < n_ranks(); ++k)
     EXPECT_GT(per_rank[k], 0) << "rank " << k << " ran no task";
+}
+
+TEST(TaskDistributor, CpuSecondsOfEachTaskComeBack) {
+  // Task 1 computes for at least 50 ms of process CPU time; the others return at once. Its
+  // cpu_seconds must reach every rank (0 would mean the figure was lost on the way).
+  const auto spin = [](std::size_t i) {
+    if (i == 1) {
+      const std::clock_t c0 = std::clock();
+      volatile double x = 0;
+      while (double(std::clock() - c0) / CLOCKS_PER_SEC < 0.05)
+        x = x + 1;
+    }
+    return std::string();
+  };
+  const auto r = app::run_tasks_across_ranks(3, spin, MPI_COMM_WORLD);
+  EXPECT_GE(r.cpu_seconds[1], 0.05);
+  EXPECT_LT(r.cpu_seconds[0], 0.05);
 }
 
 TEST(TaskDistributor, FailureReachesEveryRankWithItsType) {

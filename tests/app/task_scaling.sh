@@ -52,9 +52,14 @@ print("tables identical in every run on 1 and", n, "ranks")
 for k in ("1", n):
     print(f"{k} rank(s): wall s {' '.join(f'{x:.2f}' for x in t[k])}; median {statistics.median(t[k]):.2f}")
 print(f"ratio {n}/1 pair by pair: {' '.join(f'{r:.3f}' for r in ratios)}; median {statistics.median(ratios):.3f}")
-s = json.load(open(f"{out}/np{n}/summary.json")).get("study", {})
-busy = {}
-for r in s.get("error_vs_time", []) + s.get("stability", []):
-    busy[r["rank"]] = busy.get(r["rank"], 0) + r["wall_time_s"]
-print("last run, busy seconds per rank:", {k: round(v, 2) for k, v in sorted(busy.items())})
+# CPU seconds per rank (the work, less sensitive to other load than the wall time): on idle
+# cores the N-rank run takes about the start-up plus the busiest rank's CPU seconds.
+for k in ("1", n):
+    s = json.load(open(f"{out}/np{k}/summary.json")).get("study", {})
+    busy, cpu = {}, {}
+    for r in s.get("error_vs_time", []) + s.get("stability", []):
+        busy[r["rank"]] = busy.get(r["rank"], 0) + r["wall_time_s"]
+        cpu[r["rank"]] = cpu.get(r["rank"], 0) + r["cpu_s"]
+    print(f"last {k}-rank run: busy wall s per rank {({a: round(b, 2) for a, b in sorted(busy.items())})}, "
+          f"CPU s per rank {({a: round(b, 2) for a, b in sorted(cpu.items())})}")
 PY

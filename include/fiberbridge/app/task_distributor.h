@@ -24,6 +24,9 @@ struct TaskResults {
   std::vector<std::string> output; ///< what each task returned
   std::vector<int> rank;           ///< the rank of `comm` that ran it
   std::vector<double> seconds;     ///< its wall time
+  /// Its CPU time (the whole process's, threads included): on a loaded machine a better measure
+  /// of the work than the wall time.
+  std::vector<double> cpu_seconds;
 };
 
 /// Runs task(i) once for every i in [0, n), spread over the ranks of `comm`, and returns every
