@@ -3,10 +3,13 @@
 // simulation writer.
 //
 // Engines (FEM/Engine, issue 6): the serial 2D engine (simulate_dcb) or the distributed 2D/3D
-// engine (simulate_dcb_distributed) on all ranks of MPI_COMM_WORLD. Under mpirun every rank runs
-// this item (the distributed engine is collective); only rank 0 prints progress, and the file
-// writers are switched off on the other ranks (core/output_guard.h).
+// engine (simulate_dcb_distributed) on all ranks of simulation_communicator(): MPI_COMM_WORLD, or
+// MPI_COMM_SELF when the run is one task of several spread over the ranks (task_distributor.h;
+// then the 2D FEM takes the serial engine). Under mpirun every rank of that communicator runs
+// this item (the distributed engine is collective); only its rank 0 prints progress, and the
+// file writers are switched off on the ranks that do not write (core/output_guard.h).
 #include "fiberbridge/app/scene_context.h"
+#include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/fem/dcb_simulation.h"
 #include "fiberbridge/fem/distributed_dcb.h"
 
@@ -28,8 +31,9 @@ void run_fem_item(SceneContext& ctx) {
   ctx.prm->enter_subsection("FEM");
   params.parse_parameters(*ctx.prm);
   ctx.prm->leave_subsection();
-  const unsigned n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-  const bool rank0 = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const MPI_Comm comm = simulation_communicator();
+  const unsigned n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+  const bool rank0 = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
   const bool distributed = fem::use_distributed_engine(params, n_ranks);
   std::function<void(const std::string&)> progress;
   if (rank0)
@@ -38,7 +42,7 @@ void run_fem_item(SceneContext& ctx) {
   fem::DistributedRunInfo info;
   if (distributed)
     result = fem::simulate_dcb_distributed(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(),
-                                           params, ctx.output_dir, progress, MPI_COMM_WORLD, &info);
+                                           params, ctx.output_dir, progress, comm, &info);
   else
     result = fem::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params,
                                ctx.output_dir, progress);

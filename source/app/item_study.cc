@@ -1,7 +1,11 @@
 // Scene item `study`: error against run time (refinement ladders per model) and the stability
 // matrix (stiff, extreme and ill-posed cases). Both drive the simulation items themselves with
-// parameter overrides, so a study measures exactly what a user's scene would run.
+// parameter overrides, so a study measures exactly what a user's scene would run. Every run is
+// an independent task: under mpirun they are spread over the ranks (task_distributor.h) and the
+// tables are the same as on one rank.
 #include "fiberbridge/app/items.h"
+#include "fiberbridge/app/result_codec.h"
+#include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/plot.h"
@@ -11,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -197,13 +202,110 @@ void declare_study_section(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
+namespace {
+
+/// One model's ladder as the scene gives it: keys varied together, one value per level.
+struct Ladder {
+  std::string model;
+  std::vector<std::pair<std::string, std::vector<std::string>>> keys;
+  std::size_t levels = 0;
+};
+
+Ladder parse_ladder(const std::string& model, const std::string& text) {
+  const auto spec = split(text, ';');
+  if (spec.empty())
+    throw InputError("Study/" + section_of(model) + " ladder: empty for model '" + model +
+                     "' listed in Ladder models");
+  Ladder ladder{model, {}, 0};
+  for (const auto& s : spec) {
+    const auto eq = s.find('=');
+    if (eq == std::string::npos)
+      throw InputError("Study/" + section_of(model) + " ladder: '" + s +
+                       "' is not 'Key = v1, v2, ...'");
+    auto key = s.substr(0, eq);
+    key = key.substr(0, key.find_last_not_of(" \t") + 1);
+    const auto values = split(s.substr(eq + 1), ',');
+    if (ladder.levels && values.size() != ladder.levels)
+      throw InputError("Study/" + section_of(model) +
+                       " ladder: keys varied together need the same number of values");
+    ladder.levels = values.size();
+    ladder.keys.push_back({key, values});
+  }
+  return ladder;
+}
+
+std::string level_setting(const Ladder& ladder, std::size_t l) {
+  std::string setting;
+  for (const auto& [k, v] : ladder.keys)
+    setting += (setting.empty() ? "" : "; ") + k + " = " + v[l];
+  return setting;
+}
+
+/// One ladder level: the model with the level's keys, in study/<model>_level<l>.
+law::SimulationResult run_ladder_level(SceneContext& ctx, const Ladder& ladder, std::size_t l) {
+  std::vector<std::string> sets;
+  for (const auto& [k, v] : ladder.keys)
+    sets.push_back(section_of(ladder.model) + "/" + k + "=" + v[l]);
+  std::cerr << "study: " << ladder.model << " level " << l << " (" << level_setting(ladder, l)
+            << ")\n";
+  ScopedOverrides o(*ctx.prm, sets, "Study/" + section_of(ladder.model) + " ladder");
+  return run_model(ctx, ladder.model,
+                   ctx.out("study/" + ladder.model + "_level" + std::to_string(l)), true);
+}
+
+/// One stability case with one model: outcome, diagnosis and wall time (the model's failures are
+/// outcomes here, not errors of the study).
+Json run_stability_case(SceneContext& ctx, const Case& c, const std::string& model,
+                        double plateau_tol) {
+  std::cerr << "study: stability " << c.name << " with " << model << "\n";
+  std::string outcome, diagnosis;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    ScopedOverrides o(*ctx.prm, c.sets, "Study stability case " + c.name);
+    const auto r = run_model(ctx, model, ctx.out("study/stability_" + c.name + "_" + model), false);
+    SceneContext probe;
+    probe.prm = ctx.prm;
+    probe.scene_file = ctx.scene_file;
+    const double G_law = probe.j_tip() + probe.law()->area();
+    bool finite = !r.rcurve.empty();
+    for (const auto& p : r.rcurve)
+      finite = finite && std::isfinite(p.a) && std::isfinite(p.load);
+    for (const auto& n : r.notes)
+      diagnosis += (diagnosis.empty() ? "" : " | ") + n;
+    if (!finite) {
+      outcome = "failure";
+      diagnosis = "non-finite or empty R curve. " + diagnosis;
+    } else if (r.reached_steady_state) {
+      const double err = std::abs(r.G_ss - G_law) / G_law;
+      outcome = err <= plateau_tol ? "converged" : "suspect";
+      diagnosis = "G_ss " + std::to_string(r.G_ss) + " J/m^2 vs " + std::to_string(G_law) +
+                  " (rel. " + std::to_string(err) + "). " + diagnosis;
+    } else {
+      outcome = diagnosis.empty() ? "failure" : "diagnosed stop";
+      if (diagnosis.empty())
+        diagnosis = "no steady state and no diagnosis from the model";
+    }
+  } catch (const std::exception& e) {
+    outcome = "diagnosed stop";
+    diagnosis = e.what();
+  }
+  for (auto& ch : diagnosis)
+    if (ch == ',' || ch == '\n')
+      ch = ';';
+  const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return {{"case", c.name},     {"description", c.description}, {"model", model},
+          {"outcome", outcome}, {"diagnosis", diagnosis},       {"wall_time_s", t}};
+}
+
+} // namespace
+
 void run_study_item(SceneContext& ctx) {
   auto& prm = *ctx.prm;
   prm.enter_subsection("Study");
   const auto ladder_models = split(prm.get("Ladder models"), ',');
-  std::map<std::string, std::string> ladders{{"beam", prm.get("Beam ladder")},
-                                             {"fem", prm.get("FEM ladder")},
-                                             {"mpm", prm.get("MPM ladder")}};
+  std::map<std::string, std::string> ladder_text{{"beam", prm.get("Beam ladder")},
+                                                 {"fem", prm.get("FEM ladder")},
+                                                 {"mpm", prm.get("MPM ladder")}};
   const auto stability_models = split(prm.get("Stability models"), ',');
   const std::string case_list = prm.get("Stability cases");
   const double plateau_tol = prm.get_double("Plateau tolerance");
@@ -212,10 +314,56 @@ void run_study_item(SceneContext& ctx) {
   prm.leave_subsection();
   if (ladder_models.empty() && stability_models.empty())
     throw InputError("Study: neither 'Ladder models' nor 'Stability models' names a model");
+  std::vector<Ladder> ladders;
+  for (const auto& model : ladder_models)
+    ladders.push_back(parse_ladder(model, ladder_text[model]));
+  std::vector<Case> cases;
+  if (!stability_models.empty()) {
+    for (const auto& c : stability_cases())
+      if (case_list == "all" || ("," + case_list + ",").find(c.name) != std::string::npos)
+        cases.push_back(c);
+    if (cases.empty())
+      throw InputError("Study/Stability cases: no known case in '" + case_list + "'");
+  }
+
+  // ---- every run of the study is one task (task_distributor.h): ladder levels, then the
+  // stability cases. Each task writes its own study/<run> folder; the tables come from the
+  // gathered results below, written by rank 0 alone. Cost estimates only order the hand-out:
+  // levels are listed coarse to fine and a 2D level about quadruples the work of the previous
+  // one; a stability case counts as one coarsest level.
+  std::vector<std::function<std::string()>> tasks;
+  std::vector<double> cost;
+  for (const auto& ladder : ladders)
+    for (std::size_t l = 0; l < ladder.levels; ++l) {
+      tasks.push_back([&ctx, &ladder, l] {
+        TaskOwnsItsFiles own;
+        return json_to_bytes(result_to_json(run_ladder_level(ctx, ladder, l)));
+      });
+      cost.push_back(std::pow(4.0, double(l)));
+    }
+  const std::size_t first_case_task = tasks.size();
+  std::vector<std::pair<const Case*, std::string>> case_runs;
+  for (const auto& c : cases)
+    for (const auto& model : stability_models)
+      if (c.only_model.empty() || c.only_model == model)
+        case_runs.push_back({&c, model});
+  for (const auto& [c, model] : case_runs) {
+    tasks.push_back([&ctx, c = c, model = model, plateau_tol] {
+      TaskOwnsItsFiles own;
+      return json_to_bytes(run_stability_case(ctx, *c, model, plateau_tol));
+    });
+    cost.push_back(1.0);
+  }
+  const auto done = run_tasks_across_ranks(
+      tasks.size(), [&](std::size_t i) { return tasks[i](); }, simulation_communicator(), cost);
+
   Json block = Json::object();
+  int n_ranks = 1;
+  MPI_Comm_size(simulation_communicator(), &n_ranks);
+  block["ranks"] = n_ranks;
 
   // ---- error against run time
-  if (!ladder_models.empty()) {
+  if (!ladders.empty()) {
     CsvWriter w(ctx.out("study_error_vs_time.csv"),
                 {"model", "level", "n_dofs_or_particles", "wall_time_s", "rdelta_rel_error",
                  "G_ss_rel_error"},
@@ -228,27 +376,9 @@ void run_study_item(SceneContext& ctx) {
             "set key top right\nplot ";
     bool first_plot = true;
     const double G_law = ctx.j_tip() + ctx.law()->area();
-    for (const auto& model : ladder_models) {
-      const auto spec = split(ladders[model], ';');
-      if (spec.empty())
-        throw InputError("Study/" + section_of(model) + " ladder: empty for model '" + model +
-                         "' listed in Ladder models");
-      std::vector<std::pair<std::string, std::vector<std::string>>> keys;
-      std::size_t levels = 0;
-      for (const auto& s : spec) {
-        const auto eq = s.find('=');
-        if (eq == std::string::npos)
-          throw InputError("Study/" + section_of(model) + " ladder: '" + s +
-                           "' is not 'Key = v1, v2, ...'");
-        auto key = s.substr(0, eq);
-        key = key.substr(0, key.find_last_not_of(" \t") + 1);
-        const auto values = split(s.substr(eq + 1), ',');
-        if (levels && values.size() != levels)
-          throw InputError("Study/" + section_of(model) +
-                           " ladder: keys varied together need the same number of values");
-        levels = values.size();
-        keys.push_back({key, values});
-      }
+    std::size_t task = 0;
+    for (const auto& ladder : ladders) {
+      const auto& model = ladder.model;
       const std::string csv = "study_" + model + ".csv";
       CsvWriter mw(ctx.out(csv),
                    {"wall_time_s", "rdelta_rel_error", "G_ss_rel_error", "peak_load_N",
@@ -260,26 +390,20 @@ void run_study_item(SceneContext& ctx) {
         double key_value;
         law::SimulationResult r;
         double g_err, peak;
+        int rank;
+        double cpu_s;
       };
       std::vector<Level> run_levels;
-      for (std::size_t l = 0; l < levels; ++l) {
-        std::vector<std::string> sets;
-        std::string setting;
-        for (const auto& [k, v] : keys) {
-          sets.push_back(section_of(model) + "/" + k + "=" + v[l]);
-          setting += (setting.empty() ? "" : "; ") + k + " = " + v[l];
-        }
-        std::cerr << "study: " << model << " level " << l << " (" << setting << ")\n";
-        ScopedOverrides o(prm, sets, "Study/" + section_of(model) + " ladder");
-        auto r =
-            run_model(ctx, model, ctx.out("study/" + model + "_level" + std::to_string(l)), true);
+      for (std::size_t l = 0; l < ladder.levels; ++l, ++task) {
+        auto r = result_from_json(json_from_bytes(done.output[task]));
         double peak = 0;
         for (const auto& p : r.rcurve)
           if (std::isfinite(p.load))
             peak = std::max(peak, p.load);
         const double g_err = std::abs(r.G_ss - G_law) / G_law;
-        run_levels.push_back(
-            {setting, std::strtod(keys[0].second[l].c_str(), nullptr), std::move(r), g_err, peak});
+        run_levels.push_back({level_setting(ladder, l),
+                              std::strtod(ladder.keys[0].second[l].c_str(), nullptr), std::move(r),
+                              g_err, peak, done.rank[task], done.cpu_seconds[task]});
       }
       // Observed orders: p = log(e_l / e_{l+1}) / log(refinement factor); the peak load has no
       // exact value, so its order comes from three successive levels (constant factor assumed).
@@ -321,7 +445,9 @@ void run_study_item(SceneContext& ctx) {
                         {"observed_order_rdelta", json_number(p_r)},
                         {"observed_order_G_ss", json_number(p_g)},
                         {"observed_order_peak_load", json_number(p_p)},
-                        {"reached_steady_state", L.r.reached_steady_state}});
+                        {"reached_steady_state", L.r.reached_steady_state},
+                        {"rank", L.rank},
+                        {"cpu_s", L.cpu_s}});
       }
       block["cheapest"][model] = cheapest < 0
                                      ? Json("no level reached " + std::to_string(target))
@@ -344,66 +470,19 @@ void run_study_item(SceneContext& ctx) {
 
   // ---- stability matrix
   if (!stability_models.empty()) {
-    std::vector<Case> cases;
-    for (const auto& c : stability_cases())
-      if (case_list == "all" || ("," + case_list + ",").find(c.name) != std::string::npos)
-        cases.push_back(c);
-    if (cases.empty())
-      throw InputError("Study/Stability cases: no known case in '" + case_list + "'");
     CsvWriter w(ctx.out("stability.csv"), {"case", "model", "outcome", "diagnosis", "wall_time_s"},
                 {"outcome: converged (plateau within the tolerance of J_tip + area) | diagnosed "
                  "stop (the model said why it stopped) | suspect | failure"});
     Json rows = Json::array();
-    for (const auto& c : cases)
-      for (const auto& model : stability_models) {
-        if (!c.only_model.empty() && c.only_model != model)
-          continue;
-        std::cerr << "study: stability " << c.name << " with " << model << "\n";
-        std::string outcome, diagnosis;
-        const auto t0 = std::chrono::steady_clock::now();
-        try {
-          ScopedOverrides o(prm, c.sets, "Study stability case " + c.name);
-          const auto r =
-              run_model(ctx, model, ctx.out("study/stability_" + c.name + "_" + model), false);
-          SceneContext probe;
-          probe.prm = ctx.prm;
-          probe.scene_file = ctx.scene_file;
-          const double G_law = probe.j_tip() + probe.law()->area();
-          bool finite = !r.rcurve.empty();
-          for (const auto& p : r.rcurve)
-            finite = finite && std::isfinite(p.a) && std::isfinite(p.load);
-          for (const auto& n : r.notes)
-            diagnosis += (diagnosis.empty() ? "" : " | ") + n;
-          if (!finite) {
-            outcome = "failure";
-            diagnosis = "non-finite or empty R curve. " + diagnosis;
-          } else if (r.reached_steady_state) {
-            const double err = std::abs(r.G_ss - G_law) / G_law;
-            outcome = err <= plateau_tol ? "converged" : "suspect";
-            diagnosis = "G_ss " + std::to_string(r.G_ss) + " J/m^2 vs " + std::to_string(G_law) +
-                        " (rel. " + std::to_string(err) + "). " + diagnosis;
-          } else {
-            outcome = diagnosis.empty() ? "failure" : "diagnosed stop";
-            if (diagnosis.empty())
-              diagnosis = "no steady state and no diagnosis from the model";
-          }
-        } catch (const std::exception& e) {
-          outcome = "diagnosed stop";
-          diagnosis = e.what();
-        }
-        for (auto& ch : diagnosis)
-          if (ch == ',' || ch == '\n')
-            ch = ';';
-        const double t =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        w.row({c.name, model, outcome, diagnosis}, {t});
-        rows.push_back({{"case", c.name},
-                        {"description", c.description},
-                        {"model", model},
-                        {"outcome", outcome},
-                        {"diagnosis", diagnosis},
-                        {"wall_time_s", t}});
-      }
+    for (std::size_t k = 0; k < case_runs.size(); ++k) {
+      Json row = json_from_bytes(done.output[first_case_task + k]);
+      w.row({row["case"].get<std::string>(), row["model"].get<std::string>(),
+             row["outcome"].get<std::string>(), row["diagnosis"].get<std::string>()},
+            {row["wall_time_s"].get<double>()});
+      row["rank"] = done.rank[first_case_task + k];
+      row["cpu_s"] = done.cpu_seconds[first_case_task + k];
+      rows.push_back(std::move(row));
+    }
     w.close();
     block["stability"] = rows;
   }

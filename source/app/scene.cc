@@ -2,6 +2,7 @@
 
 #include "fiberbridge/app/analysis_steps.h"
 #include "fiberbridge/app/items.h"
+#include "fiberbridge/app/simulation_tasks.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/output_guard.h"
@@ -199,7 +200,8 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
   ctx.summary["run"] = wanted;
   ctx.summary["plots"] = Json::array();
   for (const auto& item : scene_items()) {
-    if (!wanted_set.count(item.name))
+    // Under mpirun the scene's simulations may run as tasks across the ranks (simulation_tasks.h).
+    if (!wanted_set.count(item.name) || ran_as_simulation_task(ctx, item.name, wanted_set))
       continue;
     if (writer)
       std::cerr << "fiberbridge: running " << item.name << "\n";

@@ -1,0 +1,100 @@
+#include "fiberbridge/app/simulation_tasks.h"
+
+#include "fiberbridge/app/result_codec.h"
+#include "fiberbridge/app/task_distributor.h"
+#include "fiberbridge/core/output_guard.h"
+
+#include <chrono>
+#include <functional>
+#include <iostream>
+#include <vector>
+
+namespace fiberbridge::app {
+
+namespace {
+
+/// Relative cost, only to order the hand-out (the slowest model starts first): on the seed
+/// specimen the beam takes ~0.2 s, the 2D FEM a few s, the MPM minutes (README.md).
+double cost_of(const std::string& model) {
+  return model == "mpm" ? 100.0 : model == "fem" ? 10.0 : model == "beam" ? 1.0 : 0.0;
+}
+
+/// A FEM that is one big run over all ranks by request: 3D, or the distributed engine chosen.
+bool fem_needs_all_ranks(dealii::ParameterHandler& prm) {
+  prm.enter_subsection("FEM");
+  const bool all = prm.get_integer("Dimension") == 3 || prm.get("Engine") == "distributed";
+  prm.leave_subsection();
+  return all;
+}
+
+Json run_simulations(SceneContext& ctx, const std::set<std::string>& wanted, MPI_Comm comm) {
+  std::vector<const SceneItem*> sims;
+  for (const auto& item : scene_items())
+    if (wanted.count(item.name) && cost_of(item.name) > 0 &&
+        !(item.name == "fem" && fem_needs_all_ranks(*ctx.prm)))
+      sims.push_back(&item);
+  int n_ranks = 1;
+  MPI_Comm_size(comm, &n_ranks);
+  Json block = {{"ranks", n_ranks}, {"items", Json::array()}};
+  if (sims.empty() || (sims.size() == 1 && sims[0]->name == "fem"))
+    return block; // one collective FEM run (or none): the items run as they are
+
+  std::vector<double> cost;
+  std::string names;
+  for (const auto* s : sims) {
+    cost.push_back(cost_of(s->name));
+    names += (names.empty() ? "" : ", ") + s->name;
+  }
+  if (output_enabled())
+    std::cerr << "fiberbridge: running " << names << " as independent tasks on " << n_ranks
+              << " ranks\n";
+  const auto done = run_tasks_across_ranks(
+      sims.size(),
+      [&](std::size_t i) {
+        const SceneItem& item = *sims[i];
+        SceneContext sub = ctx; // the parameters, the fitted law; the task's own summary
+        sub.summary = {{"plots", Json::array()}};
+        sub.results.clear();
+        TaskOwnsItsFiles own; // its model's files only: rcurve_<model>.csv, fields, PNG
+        const auto t0 = std::chrono::steady_clock::now();
+        item.run(sub);
+        const double t =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return json_to_bytes({{"block", sub.summary[item.name]},
+                              {"plots", sub.summary["plots"]},
+                              {"result", result_to_json(sub.results.at(item.name))},
+                              {"wall_time_s", t}});
+      },
+      comm, cost);
+  // Back into the scene in item order, as a serial run would have left them.
+  for (std::size_t i = 0; i < sims.size(); ++i) {
+    const std::string& name = sims[i]->name;
+    const Json r = json_from_bytes(done.output[i]);
+    ctx.summary[name] = r["block"];
+    for (const auto& p : r["plots"])
+      ctx.summary["plots"].push_back(p);
+    ctx.results[name] = result_from_json(r["result"]);
+    ctx.summary["item_wall_time_s"][name] = r["wall_time_s"];
+    block["items"].push_back({{"item", name}, {"rank", done.rank[i]}});
+  }
+  return block;
+}
+
+} // namespace
+
+bool ran_as_simulation_task(SceneContext& ctx, const std::string& item,
+                            const std::set<std::string>& wanted) {
+  const MPI_Comm comm = simulation_communicator();
+  int n_ranks = 1;
+  MPI_Comm_size(comm, &n_ranks);
+  if (n_ranks == 1 || cost_of(item) == 0)
+    return false;
+  if (!ctx.summary.contains("simulation_tasks"))
+    ctx.summary["simulation_tasks"] = run_simulations(ctx, wanted, comm);
+  for (const auto& t : ctx.summary["simulation_tasks"]["items"])
+    if (t["item"] == item)
+      return true;
+  return false;
+}
+
+} // namespace fiberbridge::app
