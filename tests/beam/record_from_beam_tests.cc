@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <unistd.h>
 
@@ -134,5 +135,40 @@ TEST(RecordFromBeam, ReduceRecoversTheModelsEnergyRCurve) {
       ASSERT_EQ(data.replicates.size(), 1u);
       EXPECT_EQ(data.replicates[0].delta.size(), r.a.size());
     }
+  }
+}
+
+// tests/app/data/records/beam_delta_root.csv is this generator's output (the app tests run reduce
+// and extract on it through the executable, which cannot link the beam model). Regenerate with
+// FIBERBRIDGE_REGENERATE=1 build/tests/beam/record_from_beam_tests; otherwise the file must match.
+TEST(RecordFromBeam, BundledDeltaRootRecordIsThisGeneratorsOutput) {
+  beam::BeamParameters bp;
+  bp.n_elements = 200;
+  bp.steady_state_window = 1.0;
+  const auto sim = rising_part(
+      beam::simulate_dcb(thin_dcb(), glass_composite(), law::make_trilinear(bridging()), 250, bp));
+  SyntheticRecordOptions so;
+  so.crack_reading_interval = 2;
+  so.with_delta_root = true;
+  so.seed = 11;
+  const TestRecord made = make_synthetic_record(sim, so, "beam");
+  auto comments = describe_synthetic_record(sim, so);
+  comments.insert(comments.begin(),
+                  "SYNTHETIC RECORD, not a measurement: tests/beam/record_from_beam_tests.cc "
+                  "(BundledDeltaRootRecordIsThisGeneratorsOutput) wrote it from a beam run, "
+                  "25 x 5.4 x 123 mm DCB, a0 35 mm, trilinear 0.02:1000, 0.5:250 kPa, dc 4 mm, "
+                  "J_tip 250 J/m^2");
+  const std::string bundled =
+      std::string(FIBERBRIDGE_SOURCE_DIR) + "/tests/app/data/records/beam_delta_root.csv";
+  if (std::getenv("FIBERBRIDGE_REGENERATE"))
+    write_test_record_csv(bundled, made, comments);
+  const auto rec = read_test_records(bundled).at(0);
+  ASSERT_EQ(rec.opening.size(), made.opening.size());
+  for (std::size_t i = 0; i < rec.opening.size(); i += 97) {
+    // The CSV keeps 10 significant digits (core/csv.cc); the reader sets the negative loads of
+    // the noise before the test started to 0.
+    const double load = std::max(0.0, made.load[i]);
+    EXPECT_NEAR(rec.load[i], load, 1e-6 * (1 + load));
+    EXPECT_NEAR(rec.delta_root[i], made.delta_root[i], 1e-9);
   }
 }
