@@ -1,8 +1,8 @@
 // `reduce` against a known answer: a record written from a beam-model run with a known law
 // (make_synthetic_record: a testing machine's sampling, noise and step-wise crack readings),
 // read back through the record reader and reduced; the direct-energy R(a) must recover the
-// model's own R_energy(a). The beam model is the generator here because it runs in well under a
-// second; the FEM variant is not done (docs/verification.md, "Test records").
+// model's own R_energy(a). The beam model runs in well under a second and advances by 0.5 mm; the
+// FEM-written twin is tests/fem/record_from_fem_tests.cc (docs/verification.md, "Test records").
 #include "fiberbridge/analysis/line_fit.h"
 #include "fiberbridge/analysis/record_reduction.h"
 #include "fiberbridge/analysis/synthetic_record.h"
