@@ -2,6 +2,7 @@
 // a known law (make_synthetic_record) and reduced; the direct-energy R(a) must recover the FEM's
 // own R_energy(a). The beam-model twin (tests/beam/record_from_beam_tests.cc) checks the band
 // on a finer curve; this one checks that nothing in the chain is beam-specific.
+#include "../common/thin_dcb_case.h"
 #include "fiberbridge/analysis/line_fit.h"
 #include "fiberbridge/analysis/record_reduction.h"
 #include "fiberbridge/analysis/synthetic_record.h"
@@ -24,33 +25,17 @@ using namespace fiberbridge::analysis;
 using units::mm;
 
 TEST(RecordFromFem, ReduceRecoversTheFemEnergyRCurve) {
-  law::Specimen s;
-  s.length = 123 * mm;
-  s.width = 25 * mm;
-  s.height = 5.4 * mm;
-  s.initial_crack = 35 * mm;
-  law::Material m;
-  m.E_L = 19.3e9;
-  m.E_T = 6.11e9;
-  m.G_LT = 2.29e9;
-  m.nu_LT = 0.3;
-  law::TrilinearParameters p;
-  p.d1 = 0.02 * mm;
-  p.s1 = 1.0e6;
-  p.d2 = 0.5 * mm;
-  p.s2 = 0.25e6;
-  p.dc = 4 * mm;
+  const law::Specimen s = thin_dcb_case::specimen();
+  const law::Material m = thin_dcb_case::material();
+  const law::TrilinearParameters p = thin_dcb_case::bridging();
   fem::FemParameters prm;
   prm.element_size = 1.0 * mm; // 82 advances over 81 mm, about 5 s
 
   prm.steady_state_window = 1.0;
   const auto t0 = std::chrono::steady_clock::now();
-  auto sim = fem::simulate_dcb(s, m, law::make_trilinear(p), 250, prm);
+  auto sim = fem::simulate_dcb(s, m, law::make_trilinear(p), thin_dcb_case::j_tip, prm);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::size_t n = 1;
-  while (n < sim.rcurve.size() &&
-         sim.rcurve[n].load_point_opening > sim.rcurve[n - 1].load_point_opening)
-    ++n;
+  const std::size_t n = thin_dcb_case::rising_part(sim).rcurve.size();
   std::printf("FEM: %zu rows (%zu rising) in %.1f s, a %.1f-%.1f mm, R_energy %.0f-%.0f\n",
               sim.rcurve.size(), n, wall, sim.rcurve.front().a / mm, sim.rcurve[n - 1].a / mm,
               sim.rcurve.front().R_energy, sim.rcurve[n - 1].R_energy);
