@@ -1,0 +1,112 @@
+// Identification from synthetic records written by the FEM (issue 12 verification): a known
+// trilinear law in the deal.II FEM of the shared records' specimen, the FEM's load-opening and
+// crack-length-opening path sampled like a test machine (rows every 0.083 mm of opening = 1 Hz
+// at 5 mm/min, load noise, crack readings that stay stale for several rows then jump, with
+// tracking noise), then identified with the beam model. The FEM and the beam are different
+// discretizations of different continua (2D orthotropic solid against Timoshenko arms on a
+// CBT-calibrated foundation), so the recovery is not circular.
+#include "fiberbridge/core/units.h"
+#include "fiberbridge/fem/dcb_simulation.h"
+#include "fiberbridge/identify/identify.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <random>
+
+using namespace fiberbridge;
+using units::kPa;
+using units::mm;
+
+namespace {
+
+law::Specimen specimen() {
+  law::Specimen s;
+  s.width = 25 * mm;
+  s.height = 5.4 * mm;
+  s.length = 123 * mm;
+  s.initial_crack = 35 * mm;
+  return s;
+}
+
+law::Material material(double E_L) {
+  law::Material m;
+  m.E_L = E_L;
+  m.E_T = 6.11e9;
+  m.G_LT = 2.288e9;
+  m.nu_LT = 0.3;
+  return m;
+}
+
+/// A test machine's record of a simulated path: rows every `step` of opening up to the last
+/// state, load with Gaussian noise (`load_noise` of the peak), a crack reading every
+/// `reading_every` rows with Gaussian tracking noise, never below an earlier reading.
+analysis::TestRecord machine_record(const law::SimulationResult& run, double step,
+                                    double load_noise, int reading_every, double crack_noise,
+                                    unsigned seed) {
+  analysis::TestRecord r;
+  r.name = "fem_synthetic";
+  r.source = "fem";
+  const double last = run.rcurve.back().load_point_opening;
+  for (double d = 0; d <= last; d += step)
+    r.opening.push_back(d);
+  std::vector<double> load, a;
+  identify::model_at_openings(run, r.opening, load, a);
+  const double peak = *std::max_element(load.begin(), load.end());
+  std::mt19937 gen(seed);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  double reading = a.front();
+  for (std::size_t i = 0; i < r.opening.size(); ++i) {
+    r.load.push_back(std::max(0.0, load[i] + load_noise * peak * unit(gen)));
+    if (i > 0 && i % reading_every == 0)
+      reading = std::max(reading, a[i] + crack_noise * unit(gen));
+    r.crack_length.push_back(i == 0 ? a.front() : reading);
+    r.time.push_back(static_cast<double>(i));
+    r.line.push_back(i + 2);
+  }
+  return r;
+}
+
+} // namespace
+
+TEST(IdentifyFromFem, RecoversTheLawsToughnessAndStresses) {
+  // A law shaped like those identified on the shared records (docs/verification.md): J_c =
+  // (s1 d2 + s2 (dc - d1))/2 = 722.5 J/m^2, G_ss = 1122.5 J/m^2.
+  const law::TrilinearParameters truth{0.05 * mm, 700 * kPa, 1.5 * mm, 100 * kPa, 4 * mm};
+  const double j_tip = 400;
+  fem::FemParameters fp;
+  fp.element_size = 0.5 * mm; // 5.4 elements per arm thickness; G_ss within 0.2 % of the law
+  fp.max_opening_increment = 0.2 * mm;
+  const auto run =
+      fem::simulate_dcb(specimen(), material(25e9), law::make_trilinear(truth), j_tip, fp);
+  ASSERT_TRUE(run.reached_steady_state);
+  const auto rec = machine_record(run, 0.083 * mm, 0.005, 8, 0.3 * mm, 12);
+
+  identify::IdentifySettings s;
+  // The FEM is geometrically linear: the large-rotation factor F must not be applied to it.
+  s.large_displacement = false;
+  s.load_scatter = 0.005;
+  s.crack_scatter = 0.3 * mm;
+  // The quoted modulus is wrong on purpose: the calibration from the initial compliance must
+  // find the FEM's.
+  const auto id = identify::identify_law({rec}, specimen(), material(19.3e9), s);
+  std::printf("E_L %.4g GPa; d1 %.4g mm s1 %.4g kPa d2 %.4g mm s2 %.4g kPa dc %.4g mm J_tip %.4g; "
+              "J_c %.4g (true %.4g); load rms %.3g %%, crack rms %.3g mm; %d evaluations, %d "
+              "runs, %.3g s\n",
+              id.records[0].E_L * 1e-9, id.law.d1 / mm, id.law.s1 / kPa, id.law.d2 / mm,
+              id.law.s2 / kPa, id.law.dc / mm, id.j_tip, id.law.area(), truth.area(),
+              100 * id.load_rms_rel, id.crack_rms / mm, id.evaluations, id.forward_runs,
+              id.wall_time_s);
+  for (const auto& n : id.notes)
+    std::printf("  note: %s\n", n.c_str());
+  // Issue 12's targets: J_c within 3 %, s1 and s2 within 10 %.
+  EXPECT_NEAR(id.law.area() / truth.area(), 1.0, 0.03);
+  EXPECT_NEAR(id.law.s1 / truth.s1, 1.0, 0.10);
+  EXPECT_NEAR(id.law.s2 / truth.s2, 1.0, 0.10);
+  // The FEM's initial compliance is that of a 2D orthotropic solid, which CBT (and the beam)
+  // reproduces to a few per cent: the calibrated modulus lands within 5 % of the FEM's.
+  EXPECT_NEAR(id.records[0].E_L / 25e9, 1.0, 0.05);
+  // The fit reaches the noise: load RMS within 2x the 0.5 % noise.
+  EXPECT_LT(id.load_rms_rel, 0.01);
+}
