@@ -38,27 +38,48 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-/// Slope of y against x over [begin, end) and its standard error from the residuals.
-struct SlopeFit {
-  double slope = NAN, stderr_ = NAN, intercept = NAN;
-};
-SlopeFit slope_with_error(const std::vector<double>& x, const std::vector<double>& y,
-                          std::size_t begin, std::size_t end) {
-  const LineFit f = fit_line(x, y, begin, end);
-  SlopeFit s;
-  if (!f.valid || end - begin < 3)
-    return s;
-  double sxx = 0, ss = 0;
-  for (std::size_t i = begin; i < end; ++i) {
-    sxx += (x[i] - f.x_mean) * (x[i] - f.x_mean);
-    const double r = y[i] - f.at(x[i]);
-    ss += r * r;
+/// Local straight lines of y against x over windows [begin, end) in O(1) each: prefix sums of
+/// the samples taken about their overall means, so that window sums far from the origin keep
+/// their digits (the dissipated energy grows to a few joules while its noise is ~1e-4 J).
+class WindowLines {
+public:
+  WindowLines(const std::vector<double>& x, const std::vector<double>& y) {
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      x0_ += x[i] / static_cast<double>(x.size());
+      y0_ += y[i] / static_cast<double>(y.size());
+    }
+    sx_.assign(x.size() + 1, 0.0);
+    sy_ = sxx_ = sxy_ = syy_ = sx_;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double u = x[i] - x0_, v = y[i] - y0_;
+      sx_[i + 1] = sx_[i] + u;
+      sy_[i + 1] = sy_[i] + v;
+      sxx_[i + 1] = sxx_[i] + u * u;
+      sxy_[i + 1] = sxy_[i] + u * v;
+      syy_[i + 1] = syy_[i] + v * v;
+    }
   }
-  s.slope = f.slope;
-  s.stderr_ = std::sqrt(ss / static_cast<double>(end - begin - 2) / sxx);
-  s.intercept = f.at(0.0);
-  return s;
-}
+  /// Slope over [b, e) and its standard error from the residuals; NaN below 3 points or with
+  /// no spread in x.
+  std::pair<double, double> slope(std::size_t b, std::size_t e) const {
+    const double n = static_cast<double>(e - b);
+    if (e - b < 3)
+      return {NAN, NAN};
+    const double mx = (sx_[e] - sx_[b]) / n, my = (sy_[e] - sy_[b]) / n;
+    const double Sxx = sxx_[e] - sxx_[b] - n * mx * mx;
+    const double Sxy = sxy_[e] - sxy_[b] - n * mx * my;
+    const double Syy = syy_[e] - syy_[b] - n * my * my;
+    if (!(Sxx > 0))
+      return {NAN, NAN};
+    const double k = Sxy / Sxx;
+    const double ss = std::max(0.0, Syy - k * Sxy);
+    return {k, std::sqrt(ss / (n - 2) / Sxx)};
+  }
+
+private:
+  double x0_ = 0, y0_ = 0;
+  std::vector<double> sx_, sy_, sxx_, sxy_, syy_;
+};
 
 /// Initiation (first value) and plateau (mean and std over da >= (1 - fraction) da_max).
 MethodSummary summarize(const std::vector<double>& da, const std::vector<double>& R,
@@ -186,6 +207,7 @@ ReducedRecord reduce_record(const TestRecord& rec, const TestSpecimen& sp, const
   out.cc_n = cc.slope;
   out.mcc_A1 = mcc.slope;
 
+  const WindowLines lines(ar, Dr);
   out.max_opening_over_a = 0;
   for (std::size_t j : beyond) {
     const std::size_t k = readings[j];
@@ -207,11 +229,10 @@ ReducedRecord reduce_record(const TestRecord& rec, const TestSpecimen& sp, const
     // sorted in a: the reader holds a at its running maximum).
     const auto lo = std::lower_bound(ar.begin(), ar.end(), a - out.window / 2) - ar.begin();
     const auto hi = std::upper_bound(ar.begin(), ar.end(), a + out.window / 2) - ar.begin();
-    const SlopeFit s =
-        slope_with_error(ar, Dr, static_cast<std::size_t>(lo), static_cast<std::size_t>(hi));
-    out.R_energy.push_back(s.slope / B);
-    out.R_energy_lo.push_back((s.slope - 2 * s.stderr_) / B);
-    out.R_energy_hi.push_back((s.slope + 2 * s.stderr_) / B);
+    const auto [k_D, se] = lines.slope(static_cast<std::size_t>(lo), static_cast<std::size_t>(hi));
+    out.R_energy.push_back(k_D / B);
+    out.R_energy_lo.push_back((k_D - 2 * se) / B);
+    out.R_energy_hi.push_back((k_D + 2 * se) / B);
   }
 
   out.energy = summarize(out.da, out.R_energy, o.plateau_fraction);

@@ -13,6 +13,8 @@ namespace fiberbridge::analysis {
 namespace {
 
 constexpr std::size_t min_rows = 8;
+/// The test has started once the load exceeds this fraction of its peak.
+constexpr double start_fraction = 0.05;
 const char* const our_columns[] = {"time_s", "opening_mm",    "load_N",
                                    "a_mm",   "delta_root_mm", "record"};
 
@@ -147,18 +149,31 @@ private:
     }
   }
 
+  /// The row where the test has started: the load first exceeds this fraction of the peak
+  /// (before it, load-cell offset and noise around zero are normal).
+  std::size_t start_row(const Rows& r) const {
+    const double peak = *std::max_element(r.load.begin(), r.load.end());
+    std::size_t i = 0;
+    while (i < r.load.size() && !(r.load[i] > start_fraction * peak))
+      ++i;
+    return i;
+  }
+
   void clamp_leading_negative_loads(Rows& r) {
     std::size_t n = 0;
     double lowest = 0;
-    for (std::size_t i = 0; i < r.load.size() && !(r.load[i] > 0); ++i)
+    const std::size_t start = start_row(r);
+    for (std::size_t i = 0; i < start; ++i)
       if (r.load[i] < 0) {
         lowest = std::min(lowest, r.load[i]);
         r.load[i] = 0;
         ++n;
       }
     if (n)
-      cleaning_.push_back(std::to_string(n) + " leading row(s) with a negative load (lowest " +
-                          num(lowest) + " N, load-cell offset before contact) set to 0 N.");
+      cleaning_.push_back(std::to_string(n) +
+                          " row(s) with a negative load before the load first reached " +
+                          num(start_fraction) + " of its peak (lowest " + num(lowest) +
+                          " N: load-cell offset and noise before contact) set to 0 N.");
   }
 
   void drop_after_final_drop(Rows& r) {
@@ -202,7 +217,7 @@ private:
   void drop_unload_reload(Rows& r) {
     std::vector<bool> keep(r.opening.size(), true);
     double envelope = r.opening[0];
-    std::size_t segments = 0, dropped = 0;
+    std::size_t segments = 0, dropped = 0, jitter = 0;
     std::string first_segment;
     bool tail = false;
     for (std::size_t i = 1; i < r.opening.size();) {
@@ -210,15 +225,28 @@ private:
         envelope = r.opening[i++];
         continue;
       }
+      // Below the envelope until the opening exceeds it again: an unload/reload segment if it
+      // falls back by more than the threshold, else reading noise of a slow crosshead.
       const std::size_t begin = i;
+      double lowest = envelope;
       while (i < r.opening.size() && r.opening[i] <= envelope)
-        keep[i++] = false;
+        lowest = std::min(lowest, r.opening[i++]);
+      if (lowest >= envelope - o_.unload_fraction * envelope) {
+        jitter += i - begin;
+        continue;
+      }
+      std::fill(keep.begin() + static_cast<std::ptrdiff_t>(begin),
+                keep.begin() + static_cast<std::ptrdiff_t>(i), false);
       dropped += i - begin;
       if (i == r.opening.size())
         tail = true;
       else if (segments++ == 0)
         first_segment = lines(r, begin, i - 1);
     }
+    if (jitter)
+      cleaning_.push_back(
+          std::to_string(jitter) + " row(s) where the opening fell back by less than " +
+          num(o_.unload_fraction) + " of its largest value so far (crosshead reading noise) kept.");
     if (segments)
       cleaning_.push_back(std::to_string(segments) +
                           " unload/reload segment(s) dropped (first: " + first_segment +
@@ -239,10 +267,8 @@ private:
   }
 
   void check_loads(const Rows& r) const {
-    bool started = false;
-    for (std::size_t i = 0; i < r.load.size(); ++i) {
-      started = started || r.load[i] > 0;
-      if (started && r.load[i] < 0)
+    for (std::size_t i = start_row(r); i < r.load.size(); ++i) {
+      if (r.load[i] < 0)
         throw InputError(at(r, i) + "load_N = " + num(r.load[i]) +
                          " is negative after the "
                          "test started (" +

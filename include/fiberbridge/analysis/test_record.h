@@ -49,17 +49,23 @@ struct RecordReadOptions {
   /// After the last row whose load is at least this fraction of the peak, the specimen has
   /// broken or been unloaded for good: those rows are dropped.
   double final_drop_fraction = 0.25;
+  /// An opening that falls back by more than this fraction of its largest value so far starts
+  /// an unload/reload segment; smaller falls are crosshead reading noise and are kept (the work
+  /// integral takes them as they are).
+  double unload_fraction = 0.01;
 };
 
 /// Reads one CSV record file; one TestRecord per value of the `record` column (in order of first
 /// appearance), else one named after the file's stem. Rows are cleaned in this order, each step
 /// that changed something stated as a sentence in TestRecord::cleaning:
-///  1. leading rows with a negative load (before the load first rises above zero) set to 0 N;
+///  1. negative loads before the test started (before the load first exceeds 5 % of its peak:
+///     load-cell offset and noise) set to 0 N;
 ///  2. rows after the final drop (see RecordReadOptions::final_drop_fraction) dropped;
 ///  3. rows that repeat the time of the row before dropped (the first of each run kept);
 ///  4. unload/reload segments dropped: from the first row whose opening falls below the largest
-///     opening so far until the opening exceeds it again (the envelope is kept; a stop of the
-///     crosshead at the end, where the opening never recovers, is dropped the same way);
+///     opening so far until the opening exceeds it again, when it fell by more than
+///     unload_fraction (the envelope is kept; an unloading at the end, where the opening never
+///     recovers, is dropped the same way; smaller falls are reading noise and are kept);
 ///  5. crack readings that step back within the tolerance replaced by the running maximum;
 ///  6. repeated crack readings are kept (the load and opening of those rows are good) and
 ///     counted: crack_reading_rows() gives the rows where the reading changes.

@@ -1,0 +1,92 @@
+// Cost of `reduce` on a long record: reading + cleaning a 10^5-row CSV, and the reduction
+// (direct energy with O(1) window fits, MBT/CC/MCC). Target (issue 12): well under a second.
+//   cmake --build BUILD --target bench_reduce && BUILD/bench/bench_reduce
+#include "fiberbridge/analysis/record_reduction.h"
+#include "fiberbridge/analysis/synthetic_record.h"
+#include "fiberbridge/core/units.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <unistd.h>
+
+using namespace fiberbridge;
+using units::mm;
+
+namespace {
+
+constexpr double B = 25 * mm, h = 2.7 * mm, E = 30e9;
+
+/// A linear-elastic DCB (C = 8 a^3 / (E B h^3)) whose crack grows from 35 to 100 mm against an
+/// R curve rising from 300 to 900 J/m^2: rows at every 0.05 mm of growth.
+law::SimulationResult elastic_dcb() {
+  law::SimulationResult r;
+  r.model = "closed-form beam";
+  for (double a = 35 * mm; a <= 100 * mm; a += 0.05 * mm) {
+    const double G = 300 + 600 * (1 - std::exp(-(a - 35 * mm) / (15 * mm)));
+    const double C = 8 * a * a * a / (E * B * h * h * h), dC = 24 * a * a / (E * B * h * h * h);
+    law::RCurvePoint q;
+    q.a = a;
+    q.load = std::sqrt(2 * B * G / dC);
+    q.load_point_opening = C * q.load;
+    r.rcurve.push_back(q);
+  }
+  return r;
+}
+
+/// A 10^5-row record with a new crack reading on every row (the worst case for the fits).
+std::string write_long_record() {
+  const auto sim = elastic_dcb();
+  analysis::SyntheticRecordOptions o;
+  o.opening_rate = 1e-3;
+  o.sampling_rate_hz = 1e5 * o.opening_rate / sim.rcurve.back().load_point_opening;
+  o.crack_reading_interval = 1 / o.sampling_rate_hz;
+  o.crack_reading_noise = 0;
+  const auto rec = analysis::make_synthetic_record(sim, o, "long");
+  const std::string path = "/tmp/fb_bench_reduce_" + std::to_string(::getpid()) + ".csv";
+  analysis::write_test_record_csv(path, rec, analysis::describe_synthetic_record(sim, o));
+  return path;
+}
+
+analysis::TestSpecimen specimen() {
+  analysis::TestSpecimen s;
+  s.width = B;
+  s.arm_thickness = h;
+  return s;
+}
+
+void BM_ReadRecord(benchmark::State& state) {
+  const std::string path = write_long_record();
+  for (auto _ : state) {
+    const auto r = analysis::read_test_records(path);
+    benchmark::DoNotOptimize(r.data());
+  }
+  state.counters["rows"] =
+      static_cast<double>(analysis::read_test_records(path).at(0).opening.size());
+  std::remove(path.c_str());
+}
+
+void BM_ReduceRecord(benchmark::State& state) {
+  const std::string path = write_long_record();
+  const auto rec = analysis::read_test_records(path).at(0);
+  std::remove(path.c_str());
+  for (auto _ : state) {
+    const auto r = analysis::reduce_record(rec, specimen());
+    benchmark::DoNotOptimize(r.R_energy.data());
+  }
+  // The answer beside the time: the closed-form R curve runs from 866 to 892 J/m^2 over the
+  // last third of the growth (mean about 880 J/m^2).
+  const auto r = analysis::reduce_record(rec, specimen());
+  state.counters["rows"] = static_cast<double>(rec.opening.size());
+  state.counters["readings"] = static_cast<double>(r.a.size());
+  state.counters["plateau_energy_J_m2"] = r.energy.plateau;
+  state.counters["plateau_MBT_J_m2"] = r.mbt.plateau;
+}
+
+} // namespace
+
+BENCHMARK(BM_ReadRecord)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReduceRecord)->Unit(benchmark::kMillisecond);
+BENCHMARK_MAIN();
