@@ -274,7 +274,10 @@ void check_identified_against_simulations(SceneContext& ctx) {
     const std::string file = "identify_check_" + name + ".csv";
     CsvWriter w(ctx.out(file), {"opening_mm", "load_N", "model_load_N", "a_mm", "model_a_mm"},
                 {name + " with the identified law at the record's openings"});
-    for (std::size_t i = 0; i < load.size(); ++i) {
+    // Only the rows the simulation reached (the FEM stops at steady state).
+    const double reached = result.rcurve.back().load_point_opening;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < load.size() && rec.opening[i] <= reached; ++i, ++n) {
       if (large)
         load[i] /= identify::large_displacement_factor(rec.opening[i], a[i],
                                                        ctx.specimen().arm_thickness());
@@ -283,7 +286,9 @@ void check_identified_against_simulations(SceneContext& ctx) {
     }
     w.close();
     block[name] = {{"record", rec.name},
-                   {"load_rms_rel", std::sqrt(sum / load.size()) / rec.peak_load},
+                   {"load_rms_rel", std::sqrt(sum / std::max<std::size_t>(n, 1)) / rec.peak_load},
+                   {"rows_compared", n},
+                   {"rows", load.size()},
                    {"final_a_mm", result.rcurve.back().a / mm}};
     plot += ", '" + file + "' using 1:3 with lines lw 2 title '" + name + "'";
   }
