@@ -263,8 +263,12 @@ void IdentifySettings::validate(const std::string& c) const {
 
 double initial_compliance(const analysis::TestRecord& rec, const IdentifySettings& s) {
   const double peak = *std::max_element(rec.load.begin(), rec.load.end());
-  const auto readings = analysis::crack_reading_rows(rec);
-  const std::size_t end = readings.size() > 1 ? readings[1] : rec.load.size();
+  // Before initiation: up to the first reading beyond a0 by more than three times the reading
+  // scatter (a noisy tracker changes its reading before the crack grows).
+  std::size_t end = 0;
+  while (end < rec.load.size() &&
+         rec.crack_length[end] - rec.crack_length.front() <= 3 * s.crack_scatter)
+    ++end;
   double n = 0, sp = 0, sd = 0, spp = 0, spd = 0;
   for (std::size_t i = 0; i < end; ++i)
     if (rec.load[i] >= s.compliance_low * peak && rec.load[i] <= s.compliance_high * peak) {
@@ -277,7 +281,7 @@ double initial_compliance(const analysis::TestRecord& rec, const IdentifySetting
   const double var = spp - sp * sp / n;
   if (n < 3 || !(var > 0))
     throw InputError(rec.source + ": record '" + rec.name + "' has " + std::to_string(int(n)) +
-                     " rows before the first crack jump with a load between " +
+                     " rows before the crack grows with a load between " +
                      fmt(100 * s.compliance_low) + " and " + fmt(100 * s.compliance_high) +
                      " % of the peak; Identify/Compliance window needs at least 3");
   return (spd - sp * sd / n) / var;
@@ -397,6 +401,30 @@ Identification identify_law(const std::vector<analysis::TestRecord>& records,
                           "limit, chi^2 " +
                           fmt(f));
     }
+    if (f < best_f) {
+      best_f = f;
+      best_u = u;
+    }
+  }
+  {
+    // Polish: BOBYQA again from the best start with a small trust region (the first runs stop on
+    // the relative tolerance while the d2-s2 valley is still being followed).
+    nlopt::opt opt(settings.algorithm == "bobyqa" ? nlopt::LN_BOBYQA : nlopt::LN_SBPLX,
+                   n_parameters);
+    opt.set_lower_bounds(std::vector<double>(n_parameters, 0.0));
+    opt.set_upper_bounds(std::vector<double>(n_parameters, 1.0));
+    opt.set_min_objective(objective, &data);
+    opt.set_maxeval(settings.max_evaluations);
+    opt.set_ftol_rel(0.1 * settings.relative_tolerance);
+    opt.set_initial_step(0.02);
+    std::vector<double> u = best_u;
+    double f = best_f;
+    try {
+      opt.optimize(u, f);
+    } catch (const nlopt::roundoff_limited&) {
+      f = misfit.chi2(mapping.physical(u));
+    }
+    out.notes.push_back("polish from the best start: chi^2 " + fmt(best_f) + " -> " + fmt(f));
     if (f < best_f) {
       best_f = f;
       best_u = u;

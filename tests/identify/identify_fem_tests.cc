@@ -1,19 +1,18 @@
 // Identification from synthetic records written by the FEM (issue 12 verification): a known
 // trilinear law in the deal.II FEM of the shared records' specimen, the FEM's load-opening and
-// crack-length-opening path sampled like a test machine (rows every 0.083 mm of opening = 1 Hz
-// at 5 mm/min, load noise, crack readings that stay stale for several rows then jump, with
-// tracking noise), then identified with the beam model. The FEM and the beam are different
-// discretizations of different continua (2D orthotropic solid against Timoshenko arms on a
-// CBT-calibrated foundation), so the recovery is not circular.
+// crack-length-opening path sampled like a test machine by analysis::make_synthetic_record (rows
+// every 0.083 mm of opening = 1 Hz at 5 mm/min, load noise, crack readings that stay stale for
+// several rows then jump, with tracking noise), then identified with the beam model. The FEM and
+// the beam are different discretizations of different continua (2D orthotropic solid against
+// Timoshenko arms on a CBT-calibrated foundation), so the recovery is not circular.
+#include "fiberbridge/analysis/synthetic_record.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/fem/dcb_simulation.h"
 #include "fiberbridge/identify/identify.h"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstdio>
-#include <random>
 
 using namespace fiberbridge;
 using units::kPa;
@@ -39,35 +38,6 @@ law::Material material(double E_L) {
   return m;
 }
 
-/// A test machine's record of a simulated path: rows every `step` of opening up to the last
-/// state, load with Gaussian noise (`load_noise` of the peak), a crack reading every
-/// `reading_every` rows with Gaussian tracking noise, never below an earlier reading.
-analysis::TestRecord machine_record(const law::SimulationResult& run, double step,
-                                    double load_noise, int reading_every, double crack_noise,
-                                    unsigned seed) {
-  analysis::TestRecord r;
-  r.name = "fem_synthetic";
-  r.source = "fem";
-  const double last = run.rcurve.back().load_point_opening;
-  for (double d = 0; d <= last; d += step)
-    r.opening.push_back(d);
-  std::vector<double> load, a;
-  identify::model_at_openings(run, r.opening, load, a);
-  const double peak = *std::max_element(load.begin(), load.end());
-  std::mt19937 gen(seed);
-  std::normal_distribution<double> unit(0.0, 1.0);
-  double reading = a.front();
-  for (std::size_t i = 0; i < r.opening.size(); ++i) {
-    r.load.push_back(std::max(0.0, load[i] + load_noise * peak * unit(gen)));
-    if (i > 0 && i % reading_every == 0)
-      reading = std::max(reading, a[i] + crack_noise * unit(gen));
-    r.crack_length.push_back(i == 0 ? a.front() : reading);
-    r.time.push_back(static_cast<double>(i));
-    r.line.push_back(i + 2);
-  }
-  return r;
-}
-
 } // namespace
 
 TEST(IdentifyFromFem, RecoversTheLawsToughnessAndStresses) {
@@ -81,7 +51,13 @@ TEST(IdentifyFromFem, RecoversTheLawsToughnessAndStresses) {
   const auto run =
       fem::simulate_dcb(specimen(), material(25e9), law::make_trilinear(truth), j_tip, fp);
   ASSERT_TRUE(run.reached_steady_state);
-  const auto rec = machine_record(run, 0.083 * mm, 0.005, 8, 0.3 * mm, 12);
+  analysis::SyntheticRecordOptions ro;
+  ro.sampling_rate_hz = 1;         // the shared records' rate: one row per 0.083 mm
+  ro.load_noise = 0.5;             // N, 0.5 % of the 96 N peak
+  ro.crack_reading_interval = 8;   // s: readings stale for 8 rows, then a jump
+  ro.crack_reading_noise = 0.3e-3; // m
+  ro.seed = 12;
+  const auto rec = analysis::make_synthetic_record(run, ro, "fem_synthetic");
 
   identify::IdentifySettings s;
   // The FEM is geometrically linear: the large-rotation factor F must not be applied to it.

@@ -28,8 +28,8 @@ struct IdentifySettings {
   double crack_scatter = 1e-3;
   /// Calibrate the arm modulus E_L from each record's initial compliance (else the quoted one).
   bool calibrate_modulus = true;
-  /// The initial compliance is the slope over the rows before the first crack jump whose load
-  /// lies between these fractions of that record's peak load.
+  /// The initial compliance is the slope over the rows before the crack grows (readings within
+  /// 3 crack_scatter of a0) whose load lies between these fractions of the record's peak load.
   double compliance_low = 0.1, compliance_high = 0.5;
   /// Divide the beam's small-rotation load by ISO 15024's large-displacement factor
   /// F = 1 - (3/10)(delta/a)^2 - (3/2) delta l1/a^2 (l1 = half the arm thickness: hinges).
