@@ -235,6 +235,26 @@ double objective(const std::vector<double>& u, std::vector<double>&, void* data)
   return f;
 }
 
+/// A bounded NLopt run on [0,1]^6 from `u` (updated), returning the misfit reached.
+double run_optimizer(const IdentifySettings& settings, ObjectiveData& data, double tolerance,
+                     double initial_step, std::vector<double>& u, nlopt::result& code) {
+  nlopt::opt opt(settings.algorithm == "bobyqa" ? nlopt::LN_BOBYQA : nlopt::LN_SBPLX, n_parameters);
+  opt.set_lower_bounds(std::vector<double>(n_parameters, 0.0));
+  opt.set_upper_bounds(std::vector<double>(n_parameters, 1.0));
+  opt.set_min_objective(objective, &data);
+  opt.set_maxeval(settings.max_evaluations);
+  opt.set_ftol_rel(tolerance);
+  opt.set_initial_step(initial_step);
+  double f = 0;
+  try {
+    code = opt.optimize(u, f);
+  } catch (const nlopt::roundoff_limited&) {
+    code = nlopt::ROUNDOFF_LIMITED;
+    f = data.misfit->chi2(data.mapping->physical(u));
+  }
+  return f;
+}
+
 } // namespace
 
 void IdentifySettings::validate(const std::string& c) const {
@@ -380,27 +400,11 @@ Identification identify_law(const std::vector<analysis::TestRecord>& records,
   for (int s = 0; s < settings.starts; ++s) {
     const Parameters p0 = start_value(prepared, settings, dc_factors[s % 4] * (1 + s / 4));
     std::vector<double> u = mapping.normalized(p0);
-    nlopt::opt opt(settings.algorithm == "bobyqa" ? nlopt::LN_BOBYQA : nlopt::LN_SBPLX,
-                   n_parameters);
-    opt.set_lower_bounds(std::vector<double>(n_parameters, 0.0));
-    opt.set_upper_bounds(std::vector<double>(n_parameters, 1.0));
-    opt.set_min_objective(objective, &data);
-    opt.set_maxeval(settings.max_evaluations);
-    opt.set_ftol_rel(settings.relative_tolerance);
-    opt.set_initial_step(0.1);
-    double f = 0;
-    try {
-      const auto result = opt.optimize(u, f);
-      out.notes.push_back("start " + std::to_string(s + 1) + ": NLopt " + settings.algorithm +
-                          " stopped with code " + std::to_string(static_cast<int>(result)) +
-                          " at chi^2 " + fmt(f));
-    } catch (const nlopt::roundoff_limited&) {
-      f = misfit.chi2(mapping.physical(u));
-      out.notes.push_back("start " + std::to_string(s + 1) +
-                          ": NLopt stopped at its round-off "
-                          "limit, chi^2 " +
-                          fmt(f));
-    }
+    nlopt::result code{};
+    const double f = run_optimizer(settings, data, settings.relative_tolerance, 0.1, u, code);
+    out.notes.push_back("start " + std::to_string(s + 1) + ": NLopt " + settings.algorithm +
+                        " stopped with code " + std::to_string(static_cast<int>(code)) +
+                        " at chi^2 " + fmt(f));
     if (f < best_f) {
       best_f = f;
       best_u = u;
@@ -409,21 +413,10 @@ Identification identify_law(const std::vector<analysis::TestRecord>& records,
   {
     // Polish: BOBYQA again from the best start with a small trust region (the first runs stop on
     // the relative tolerance while the d2-s2 valley is still being followed).
-    nlopt::opt opt(settings.algorithm == "bobyqa" ? nlopt::LN_BOBYQA : nlopt::LN_SBPLX,
-                   n_parameters);
-    opt.set_lower_bounds(std::vector<double>(n_parameters, 0.0));
-    opt.set_upper_bounds(std::vector<double>(n_parameters, 1.0));
-    opt.set_min_objective(objective, &data);
-    opt.set_maxeval(settings.max_evaluations);
-    opt.set_ftol_rel(0.1 * settings.relative_tolerance);
-    opt.set_initial_step(0.02);
     std::vector<double> u = best_u;
-    double f = best_f;
-    try {
-      opt.optimize(u, f);
-    } catch (const nlopt::roundoff_limited&) {
-      f = misfit.chi2(mapping.physical(u));
-    }
+    nlopt::result code{};
+    const double f =
+        run_optimizer(settings, data, 0.1 * settings.relative_tolerance, 0.02, u, code);
     out.notes.push_back("polish from the best start: chi^2 " + fmt(best_f) + " -> " + fmt(f));
     if (f < best_f) {
       best_f = f;

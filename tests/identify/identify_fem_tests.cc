@@ -9,36 +9,19 @@
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/fem/dcb_simulation.h"
 #include "fiberbridge/identify/identify.h"
+#include "record_specimen.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
 using namespace fiberbridge;
+using identify::testing::record_material;
+using identify::testing::record_specimen;
 using units::kPa;
 using units::mm;
 
-namespace {
-
-law::Specimen specimen() {
-  law::Specimen s;
-  s.width = 25 * mm;
-  s.height = 5.4 * mm;
-  s.length = 123 * mm;
-  s.initial_crack = 35 * mm;
-  return s;
-}
-
-law::Material material(double E_L) {
-  law::Material m;
-  m.E_L = E_L;
-  m.E_T = 6.11e9;
-  m.G_LT = 2.288e9;
-  m.nu_LT = 0.3;
-  return m;
-}
-
-} // namespace
+namespace {} // namespace
 
 TEST(IdentifyFromFem, RecoversTheLawsToughnessAndStresses) {
   // A law shaped like those identified on the shared records (docs/verification.md): J_c =
@@ -48,8 +31,8 @@ TEST(IdentifyFromFem, RecoversTheLawsToughnessAndStresses) {
   fem::FemParameters fp;
   fp.element_size = 0.5 * mm; // 5.4 elements per arm thickness; G_ss within 0.2 % of the law
   fp.max_opening_increment = 0.2 * mm;
-  const auto run =
-      fem::simulate_dcb(specimen(), material(25e9), law::make_trilinear(truth), j_tip, fp);
+  const auto run = fem::simulate_dcb(record_specimen(), record_material(25e9),
+                                     law::make_trilinear(truth), j_tip, fp);
   ASSERT_TRUE(run.reached_steady_state);
   analysis::SyntheticRecordOptions ro;
   ro.sampling_rate_hz = 1;         // the shared records' rate: one row per 0.083 mm
@@ -66,7 +49,7 @@ TEST(IdentifyFromFem, RecoversTheLawsToughnessAndStresses) {
   s.crack_scatter = 0.3 * mm;
   // The quoted modulus is wrong on purpose: the calibration from the initial compliance must
   // find the FEM's.
-  const auto id = identify::identify_law({rec}, specimen(), material(19.3e9), s);
+  const auto id = identify::identify_law({rec}, record_specimen(), record_material(19.3e9), s);
   std::printf("E_L %.4g GPa; d1 %.4g mm s1 %.4g kPa d2 %.4g mm s2 %.4g kPa dc %.4g mm J_tip %.4g; "
               "J_c %.4g (true %.4g); load rms %.3g %%, crack rms %.3g mm; %d evaluations, %d "
               "runs, %.3g s\n",

@@ -2,6 +2,7 @@
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/identify/identify.h"
+#include "record_specimen.h"
 
 #include <gtest/gtest.h>
 
@@ -9,27 +10,11 @@
 
 using namespace fiberbridge;
 using namespace fiberbridge::identify;
+using identify::testing::record_material;
+using identify::testing::record_specimen;
 using units::mm;
 
 namespace {
-
-/// The shared records' specimen (data/dcb_records/README.md) with the quoted moduli.
-law::Specimen record_specimen() {
-  law::Specimen s;
-  s.width = 25 * mm;
-  s.height = 5.4 * mm;
-  s.length = 123 * mm;
-  s.initial_crack = 35 * mm;
-  return s;
-}
-law::Material quoted_material() {
-  law::Material m;
-  m.E_L = 19.3e9;
-  m.E_T = 6.11e9;
-  m.G_LT = 2.288e9;
-  m.nu_LT = 0.3;
-  return m;
-}
 
 analysis::TestRecord shared_record(const std::string& name) {
   analysis::RecordReadOptions o;
@@ -46,7 +31,7 @@ TEST(Identify, SharedRecords) {
   for (const char* name : {"DCB-01", "DCB-02", "DCB-03", "DCB-05"}) {
     const auto rec = shared_record(name);
     IdentifySettings s;
-    const auto id = identify_law({rec}, record_specimen(), quoted_material(), s,
+    const auto id = identify_law({rec}, record_specimen(), record_material(19.3e9), s,
                                  [](const std::string& l) { std::printf("%s\n", l.c_str()); });
     std::printf("%s: E_L %.4g GPa, d1 %.4g mm s1 %.4g kPa d2 %.4g mm s2 %.4g kPa dc %.4g mm "
                 "J_tip %.4g G_ss %.4g | load rms %.4g %% crack rms %.4g mm | %d evals, %d runs, "
@@ -102,7 +87,7 @@ TEST(Identify, ModulusFromComplianceInvertsCbt) {
   // initiation state has the CBT compliance of the calibrated modulus to 0.5 % (measured 0.15 %
   // here; the beam's tip lumping is O(h_e^2), 0.23 % at 400 elements, include/.../dcb_beam.h).
   auto s = record_specimen();
-  const auto m = quoted_material();
+  const auto m = record_material(19.3e9);
   const double c = 0.037 * mm; // DCB-01's initial compliance, m/N
   law::Material cal = m;
   cal.E_L = modulus_for_compliance(s, m, c);

@@ -1,6 +1,6 @@
 #pragma once
 // The bridging law identified from test records without a measured notch-root opening (the
-// seed's "second approach", docs/design.md "Identify"): the trilinear law (d1, s1, d2, s2,
+// seed's "second approach", docs/verification.md, "Identify"): the trilinear law (d1, s1, d2, s2,
 // delta_c) and J_tip for which the beam model of the specimen reproduces the measured
 // load-opening and crack-length-opening curves. The optimizer is NLopt's bounded derivative-free
 // BOBYQA (or SBPLX); the uncertainties come from the finite-difference Jacobian of the weighted
