@@ -12,7 +12,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -60,6 +62,12 @@ void declare_identify_section(dealii::ParameterHandler& prm) {
 }
 
 namespace {
+
+/// A record name as a gnuplot title (enhanced text would turn '_' into a subscript).
+std::string title_of(std::string name) {
+  std::replace(name.begin(), name.end(), '_', ' ');
+  return name;
+}
 
 identify::IdentifySettings parse_identify_section(dealii::ParameterHandler& prm) {
   identify::IdentifySettings s;
@@ -189,10 +197,10 @@ void write_identification(SceneContext& ctx, const identify::Identification& id)
     w.close();
     const std::string sep = k ? ", " : "plot ";
     load_plot += sep + "'" + file + "' using 1:2 with points pt 7 ps 0.4 lc " +
-                 std::to_string(k + 1) + " title '" + r.name + " measured', '" + file +
+                 std::to_string(k + 1) + " title '" + title_of(r.name) + " measured', '" + file +
                  "' using 1:3 with lines lw 2 lc " + std::to_string(k + 1) + " title 'model'";
     crack_plot += sep + "'" + file + "' using 1:4 with points pt 7 ps 0.4 lc " +
-                  std::to_string(k + 1) + " title '" + r.name + " readings', '" + file +
+                  std::to_string(k + 1) + " title '" + title_of(r.name) + " readings', '" + file +
                   "' using 1:5 with lines lw 2 lc " + std::to_string(k + 1) + " title 'model'";
   }
   const std::string head = "set datafile separator ','\nset key autotitle columnhead\n";
@@ -266,7 +274,7 @@ void check_identified_against_simulations(SceneContext& ctx) {
   ctx.prm->leave_subsection();
   Json block = Json::object();
   std::string plot = "plot 'identify_fit_0.csv' using 1:2 with points pt 7 ps 0.4 title '" +
-                     rec.name + " measured'";
+                     title_of(rec.name) + " measured'";
   for (const auto& [name, result] : ctx.results) {
     std::vector<double> load, a;
     identify::model_at_openings(result, rec.opening, load, a);
@@ -293,6 +301,24 @@ void check_identified_against_simulations(SceneContext& ctx) {
     plot += ", '" + file + "' using 1:3 with lines lw 2 title '" + name + "'";
   }
   ctx.summary["identify_check"] = block;
+  // The simulations' R(a) beside the record's measured R(a) when `reduce` ran in this scene.
+  if (std::filesystem::exists(ctx.out("rcurve_test.csv"))) {
+    std::string r_plot = "plot 'rcurve_test.csv' using 2:(strcol(1) eq '" + rec.name +
+                         "' ? $4 : NaN) every ::1 with points pt 7 ps 0.5 title '" +
+                         title_of(rec.name) + " R_{energy} measured', '' using 2:(strcol(1) eq '" +
+                         rec.name +
+                         "' ? $7 : NaN) every ::1 with points pt 6 ps 0.5 title 'R_{MBT} measured'";
+    for (const auto& [name, result] : ctx.results)
+      r_plot += ", 'rcurve_" + name + ".csv' using 1:4 every ::1 with lines lw 2 title '" + name +
+                " R_J, identified law'";
+    if (run_gnuplot(ctx.output_dir,
+                    gnuplot_png_preamble("identify_check_R_a.png") +
+                        "set datafile separator ','\nset title 'identified law in the "
+                        "simulations against the measured R(a)'\nset xlabel 'crack length a "
+                        "(mm)'\nset ylabel 'R (J/m^2)'\nset key bottom right\n" +
+                        r_plot + "\n"))
+      ctx.summary["plots"].push_back("identify_check_R_a.png");
+  }
   if (run_gnuplot(ctx.output_dir,
                   gnuplot_png_preamble("identify_check_load.png") +
                       "set datafile separator ','\nset title 'identified law in the "
