@@ -70,7 +70,18 @@ void run_reduce_item(SceneContext& ctx) {
   o.specimen.pin_to_arm_midplane = l1 > 0 ? l1 * mm : NAN;
   o.specimen.pin_to_block_edge = l2 > 0 ? l2 * mm : NAN;
   prm.leave_subsection();
-  run_reduce(o, ctx.output_dir, ctx.summary);
+  const auto r = run_reduce(o, ctx.output_dir, ctx.summary);
+  // With a measured notch-root opening, R(delta_root) feeds extract/fit (which run after reduce)
+  // unless the scene names its own Data/File.
+  if (!r.reduced.front().delta_root.empty()) {
+    prm.enter_subsection("Data");
+    if (prm.get("File").empty()) {
+      prm.set("File", ctx.out("rdelta_test.csv"));
+      ctx.summary["reduce"]["notes"].push_back("Data/File set to rdelta_test.csv: extract and fit "
+                                               "use the records' R(delta_root)");
+    }
+    prm.leave_subsection();
+  }
 }
 
 } // namespace fiberbridge::app

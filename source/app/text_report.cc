@@ -18,11 +18,34 @@ std::string num(const Json& j, const char* key, int precision = 4) {
   return buf;
 }
 
+/// Per record: plateau by each method, MBT |Delta| and what the reader cleaned.
+std::string reduce_report(const Json& b) {
+  std::ostringstream r;
+  auto plateaus = [](const Json& j) {
+    std::string p;
+    for (const char* m : {"energy", "MBT", "CC", "MCC"})
+      p += std::string(p.empty() ? "" : ", ") + m + " " + num(j[m], "plateau_J_m2");
+    return p;
+  };
+  for (const auto& rec : b["records"]) {
+    r << "reduce " << rec["name"].get<std::string>() << ": plateau R " << plateaus(rec)
+      << " J/m^2; MBT |Delta| " << num(rec, "MBT_Delta_mm", 3) << " mm, window "
+      << num(rec, "smoothing_window_mm", 3) << " mm\n";
+    for (const auto& c : rec["cleaning"])
+      r << "  cleaned: " << c.get<std::string>() << "\n";
+  }
+  r << "reduce mean of " << b["mean"]["n_records"].get<int>() << ": plateau R "
+    << plateaus(b["mean"]) << " J/m^2\n";
+  return r.str();
+}
+
 } // namespace
 
 std::string text_report(const Json& s) {
   std::ostringstream r;
   r << "fiberbridge report: " << (s.contains("scene") ? s["scene"].get<std::string>() : "") << "\n";
+  if (s.contains("reduce"))
+    r << reduce_report(s["reduce"]);
   if (s.contains("G_ss_J_m2")) {
     r << "extraction: J_tip " << num(s, "J_tip_J_m2") << " J/m^2, G_ss " << num(s, "G_ss_J_m2")
       << " J/m^2, delta_c " << num(s, "delta_c_mm") << " mm\n";

@@ -1,8 +1,9 @@
 // `reduce` against a known answer: a record written from a beam-model run with a known law
 // (make_synthetic_record: a testing machine's sampling, noise and step-wise crack readings),
 // read back through the record reader and reduced; the direct-energy R(a) must recover the
-// model's own R_energy(a). The beam model is the generator here because it runs in well under a
-// second; the FEM variant is not done (docs/verification.md, "Test records").
+// model's own R_energy(a). The beam model runs in well under a second and advances by 0.5 mm; the
+// FEM-written twin is tests/fem/record_from_fem_tests.cc (docs/verification.md, "Test records").
+#include "../common/thin_dcb_case.h"
 #include "fiberbridge/analysis/line_fit.h"
 #include "fiberbridge/analysis/record_reduction.h"
 #include "fiberbridge/analysis/synthetic_record.h"
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <unistd.h>
 
@@ -22,53 +24,13 @@ using namespace fiberbridge;
 using namespace fiberbridge::analysis;
 using units::mm;
 
-namespace {
-
-/// A thin glass-fibre DCB like the shared records (data/dcb_records/README.md): B 25 mm, arms
-/// 2.7 mm, length 123 mm, a0 35 mm.
-law::Specimen thin_dcb() {
-  law::Specimen s;
-  s.length = 123 * mm;
-  s.width = 25 * mm;
-  s.height = 5.4 * mm;
-  s.initial_crack = 35 * mm;
-  return s;
-}
-
-law::Material glass_composite() {
-  law::Material m;
-  m.E_L = 19.3e9;
-  m.E_T = 6.11e9;
-  m.G_LT = 2.29e9;
-  m.nu_LT = 0.3;
-  return m;
-}
-
-/// Bridging of 750 J/m^2 over 4 mm on a 250 J/m^2 tip: an R curve rising over tens of mm.
-law::TrilinearParameters bridging() {
-  law::TrilinearParameters p;
-  p.d1 = 0.02 * mm;
-  p.s1 = 1.0e6;
-  p.d2 = 0.5 * mm;
-  p.s2 = 0.25e6;
-  p.dc = 4 * mm;
-  return p;
-}
-
-/// The rows up to the first fall of the load-point opening (snap-back near the far end cannot be
-/// sampled at constant crosshead rate).
-law::SimulationResult rising_part(law::SimulationResult r) {
-  std::size_t n = 1;
-  while (n < r.rcurve.size() && r.rcurve[n].load_point_opening > r.rcurve[n - 1].load_point_opening)
-    ++n;
-  r.rcurve.resize(n);
-  return r;
-}
-
-} // namespace
+using thin_dcb_case::bridging;
+using thin_dcb_case::rising_part;
+const auto thin_dcb = thin_dcb_case::specimen;
+const auto glass_composite = thin_dcb_case::material;
 
 TEST(RecordFromBeam, ReduceRecoversTheModelsEnergyRCurve) {
-  const double j_tip = 250;
+  const double j_tip = thin_dcb_case::j_tip;
   beam::BeamParameters bp;
   bp.n_elements = 200;
   bp.steady_state_window = 1.0; // run to the end of the ligament
@@ -134,5 +96,40 @@ TEST(RecordFromBeam, ReduceRecoversTheModelsEnergyRCurve) {
       ASSERT_EQ(data.replicates.size(), 1u);
       EXPECT_EQ(data.replicates[0].delta.size(), r.a.size());
     }
+  }
+}
+
+// tests/app/data/records/beam_delta_root.csv is this generator's output (the app tests run reduce
+// and extract on it through the executable, which cannot link the beam model). Regenerate with
+// FIBERBRIDGE_REGENERATE=1 build/tests/beam/record_from_beam_tests; otherwise the file must match.
+TEST(RecordFromBeam, BundledDeltaRootRecordIsThisGeneratorsOutput) {
+  beam::BeamParameters bp;
+  bp.n_elements = 200;
+  bp.steady_state_window = 1.0;
+  const auto sim = rising_part(beam::simulate_dcb(
+      thin_dcb(), glass_composite(), law::make_trilinear(bridging()), thin_dcb_case::j_tip, bp));
+  SyntheticRecordOptions so;
+  so.crack_reading_interval = 2;
+  so.with_delta_root = true;
+  so.seed = 11;
+  const TestRecord made = make_synthetic_record(sim, so, "beam");
+  auto comments = describe_synthetic_record(sim, so);
+  comments.insert(comments.begin(),
+                  "SYNTHETIC RECORD, not a measurement: tests/beam/record_from_beam_tests.cc "
+                  "(BundledDeltaRootRecordIsThisGeneratorsOutput) wrote it from a beam run, "
+                  "25 x 5.4 x 123 mm DCB, a0 35 mm, trilinear 0.02:1000, 0.5:250 kPa, dc 4 mm, "
+                  "J_tip 250 J/m^2");
+  const std::string bundled =
+      std::string(FIBERBRIDGE_SOURCE_DIR) + "/tests/app/data/records/beam_delta_root.csv";
+  if (std::getenv("FIBERBRIDGE_REGENERATE"))
+    write_test_record_csv(bundled, made, comments);
+  const auto rec = read_test_records(bundled).at(0);
+  ASSERT_EQ(rec.opening.size(), made.opening.size());
+  for (std::size_t i = 0; i < rec.opening.size(); i += 97) {
+    // The CSV keeps 10 significant digits (core/csv.cc); the reader sets the negative loads of
+    // the noise before the test started to 0.
+    const double load = std::max(0.0, made.load[i]);
+    EXPECT_NEAR(rec.load[i], load, 1e-6 * (1 + load));
+    EXPECT_NEAR(rec.delta_root[i], made.delta_root[i], 1e-9);
   }
 }
