@@ -40,6 +40,10 @@ void run_compare_item(SceneContext& ctx) {
   const auto law = ctx.law();
   const double j_tip = ctx.j_tip();
   Json block = Json::object();
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+  if (ctx.identification)
+    check_identified_against_simulations(ctx);
+#endif
 
   std::vector<const law::SimulationResult*> models;
   for (const auto& [name, r] : ctx.results)

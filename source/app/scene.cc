@@ -29,6 +29,9 @@ const std::vector<SceneItem>& scene_items() {
   // items that compare them.
   static const std::vector<SceneItem> items = {
       {"reduce", &declare_test_section, &run_reduce_item},
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+      {"identify", &declare_identify_section, &run_identify_item},
+#endif
       {"extract", &declare_data_section, &run_extract_item},
       {"fit", &declare_fit_section, &run_fit_item},
       {"rank", &declare_rank_section, &run_rank_item},
@@ -50,7 +53,8 @@ const std::vector<SceneItem>& scene_items() {
 
 namespace {
 
-const char* all_item_names = "reduce, extract, fit, rank, bridging, fem, mpm, beam, compare, study";
+const char* all_item_names =
+    "reduce, identify, extract, fit, rank, bridging, fem, mpm, beam, compare, study";
 
 void declare_everything(dealii::ParameterHandler& prm) {
   prm.declare_entry("Output directory", "output", dealii::Patterns::Anything(),

@@ -54,6 +54,8 @@ double SceneContext::j_tip() {
 }
 
 law::Specimen SceneContext::specimen() const {
+  if (identified_specimen)
+    return *identified_specimen;
   law::Specimen s;
   prm->enter_subsection("Specimen");
   s.length = prm->get_double("Length") * mm;
@@ -66,6 +68,8 @@ law::Specimen SceneContext::specimen() const {
 }
 
 law::Material SceneContext::material() const {
+  if (identified_material)
+    return *identified_material;
   law::Material m;
   prm->enter_subsection("Material");
   m.E_L = prm->get_double("E_L") * MPa;

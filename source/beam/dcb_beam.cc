@@ -39,6 +39,8 @@ void BeamParameters::validate(const std::string& c) const {
     throw InputError(c + "/Newton tolerance: must be in (0, 0.01)");
   if (max_newton_iterations < 1)
     throw InputError(c + "/Newton iterations: must be >= 1");
+  if (!(final_crack_length >= 0))
+    throw InputError(c + ": the final crack length must be >= 0 (0 = stop at steady state)");
   if (max_advances < 1)
     throw InputError(c + ": max_advances must be >= 1");
 }
@@ -650,13 +652,16 @@ SimulationResult DcbBeamSolver::run() {
       say("beam: a = " + fmt(p.a / mm) + " mm, load " + fmt(p.load) + " N, delta_root " +
           fmt(p.delta_root / mm) + " mm");
 
-    if (moved) {
+    if (moved && !result.reached_steady_state) {
       result.G_ss = steady_state_plateau(result.rcurve, dissipation, move_index);
       if (std::isfinite(result.G_ss)) {
         result.reached_steady_state = true;
-        break;
+        if (!(prm_.final_crack_length > 0))
+          break;
       }
     }
+    if (prm_.final_crack_length > 0 && x_[tip] >= prm_.final_crack_length)
+      break;
     if (tip + step > last_node || L - x_[tip + step] < prm_.minimum_ligament) {
       ligament_ran_out = true;
       stop_reason = "the ligament ran out: the tip reached a = " + fmt(x_[tip] / mm) +

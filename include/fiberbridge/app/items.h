@@ -23,6 +23,12 @@ void run_study_item(SceneContext& ctx);
 void declare_test_section(dealii::ParameterHandler& prm);
 void run_reduce_item(SceneContext& ctx);
 
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+void declare_identify_section(dealii::ParameterHandler& prm);
+void run_identify_item(SceneContext& ctx);
+/// For compare: the identified law's simulations against the first record (identify_check).
+void check_identified_against_simulations(SceneContext& ctx);
+#endif
 #ifdef FIBERBRIDGE_HAVE_BEAM
 void declare_beam_section(dealii::ParameterHandler& prm);
 void run_beam_item(SceneContext& ctx);

@@ -12,11 +12,17 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace fiberbridge::app {
 
 struct ExtractionOutcome; // analysis_steps.h
+}
+namespace fiberbridge::identify {
+struct Identification; // identify/identify.h
+}
+namespace fiberbridge::app {
 
 struct SceneContext {
   dealii::ParameterHandler* prm = nullptr; ///< every section declared, the scene parsed
@@ -31,6 +37,12 @@ struct SceneContext {
   /// What `extract` found (data curve, steady state, laws), for `fit` and `bridging`.
   std::shared_ptr<const ExtractionOutcome> extraction;
   std::string scene_file; ///< for resolving relative data paths
+
+  /// What `identify` found; it also sets fitted_law/fitted_j_tip and the effective specimen
+  /// (first record's a0) and material (its calibrated E_L) that specimen()/material() return.
+  std::shared_ptr<const identify::Identification> identification;
+  std::optional<law::Specimen> identified_specimen;
+  std::optional<law::Material> identified_material;
 
   /// Results of the simulations that ran, by model name ("fem", "mpm", "beam"), for compare.
   std::map<std::string, law::SimulationResult> results;

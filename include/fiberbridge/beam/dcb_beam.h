@@ -53,6 +53,10 @@ struct BeamParameters {
   /// its round-off floor) and the tip condition holds to this relative tolerance.
   double newton_tolerance = 1e-10;
   int max_newton_iterations = 40;
+  /// Run on to this crack length [m] instead of stopping at steady state (0 = stop at steady
+  /// state): a test record goes on growing the crack past the plateau, and a model compared with
+  /// it must too. Steady state is still detected and G_ss reported.
+  double final_crack_length = 0;
   /// Stop after this many recorded advances even if the ligament is long (safety net).
   int max_advances = 100000;
   /// Finite rotations of the free arm (Beam/Kinematics = finite): the load and the load-point

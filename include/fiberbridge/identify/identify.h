@@ -1,0 +1,121 @@
+#pragma once
+// The bridging law identified from test records without a measured notch-root opening (the
+// seed's "second approach", docs/verification.md, "Identify"): the trilinear law (d1, s1, d2, s2,
+// delta_c) and J_tip for which the beam model of the specimen reproduces the measured
+// load-opening and crack-length-opening curves. The optimizer is NLopt's bounded derivative-free
+// BOBYQA (or SBPLX); the uncertainties come from the finite-difference Jacobian of the weighted
+// residuals at the optimum.
+#include "fiberbridge/analysis/test_record.h"
+#include "fiberbridge/beam/dcb_beam.h"
+#include "fiberbridge/law/piecewise_linear_law.h"
+#include "fiberbridge/law/specimen.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace fiberbridge::identify {
+
+struct IdentifySettings {
+  /// Bounds of the search [m], [Pa], [J/m^2].
+  double delta_c_min = 0.2e-3, delta_c_max = 40e-3;
+  double stress_max = 20e6;
+  double j_tip_min = 20, j_tip_max = 3000;
+  /// Expected scatter of the measurements: the residuals are divided by it, so that the misfit
+  /// is a chi^2 and the Jacobian gives parameter uncertainties. Load: relative to the record's
+  /// peak load; crack readings: [m].
+  double load_scatter = 0.02;
+  double crack_scatter = 1e-3;
+  /// Calibrate the arm modulus E_L from each record's initial compliance (else the quoted one).
+  bool calibrate_modulus = true;
+  /// The initial compliance is the slope over the rows before the crack grows (readings within
+  /// 3 crack_scatter of a0) whose load lies between these fractions of the record's peak load.
+  double compliance_low = 0.1, compliance_high = 0.5;
+  /// Divide the beam's small-rotation load by ISO 15024's large-displacement factor
+  /// F = 1 - (3/10)(delta/a)^2 - (3/2) delta l1/a^2 (l1 = half the arm thickness: hinges).
+  bool large_displacement = true;
+  /// NLopt: "bobyqa" or "sbplx"; evaluations per start; starts (different delta_c guesses).
+  std::string algorithm = "bobyqa";
+  int max_evaluations = 300;
+  int starts = 2;
+  double relative_tolerance = 1e-4; ///< on the objective, per start
+  /// Forward model settings (coarser than the Beam section's defaults: the misfit is
+  /// smooth enough at 1 mm steps, see docs/verification.md).
+  beam::BeamParameters beam = [] {
+    beam::BeamParameters b;
+    b.n_elements = 160;
+    b.tip_advance = 1e-3;
+    return b;
+  }();
+  /// Throws InputError naming `context`/<key> for an unusable value.
+  void validate(const std::string& context = "Identify") const;
+};
+
+/// One record as the identified model reproduces it.
+struct RecordFit {
+  std::string name;
+  double initial_crack = 0;      ///< a0 [m]
+  double initial_compliance = 0; ///< measured [m/N]
+  double E_L = 0;                ///< modulus used for this record (calibrated or quoted) [Pa]
+  double peak_load = 0;          ///< [N]
+  double load_rms_rel = 0;       ///< RMS of (P_model - P) over the rows, / peak load
+  double crack_rms = 0;          ///< RMS of (a_model - a) over the crack-reading rows [m]
+  double max_opening_over_a = 0; ///< largest delta/a of the record (large-rotation measure)
+  double min_F = 1;              ///< smallest ISO 15024 F over the rows
+  std::vector<double> opening, load, crack_length;    ///< the record's rows
+  std::vector<double> model_load, model_crack_length; ///< the model at those openings
+};
+
+struct ParameterEstimate {
+  std::string name; ///< d1_mm, sigma1_kPa, d2_mm, sigma2_kPa, delta_c_mm, J_tip_J_m2
+  double value = 0; ///< in the unit of its name
+  double std_error = 0;
+};
+
+struct Identification {
+  law::TrilinearParameters law; ///< SI
+  double j_tip = 0;             ///< [J/m^2]
+  double g_ss = 0;              ///< J_tip + area of the law [J/m^2]
+  double j_c_std_error = 0;     ///< [J/m^2]
+  std::vector<RecordFit> records;
+  double load_rms_rel = 0; ///< over all rows of all records
+  double crack_rms = 0;    ///< [m], over all crack readings
+  double chi2 = 0;         ///< sum of squared weighted residuals at the optimum
+  std::size_t n_residuals = 0;
+  int evaluations = 0;       ///< forward evaluations of the misfit (each runs every record)
+  int forward_runs = 0;      ///< beam runs, including the Jacobian's
+  double forward_time_s = 0; ///< time inside the beam model
+  double wall_time_s = 0;
+  std::vector<ParameterEstimate> parameters;
+  std::vector<std::vector<double>> correlation;
+  std::vector<std::string> notes; ///< unidentifiable combinations, optimizer stops, ...
+  /// The law with its one-standard-error band on a grid [m], [Pa].
+  std::vector<double> band_delta, band_sigma, band_lo, band_hi;
+};
+
+/// The initial compliance of a record (slope of opening over load on the initial linear rows,
+/// see IdentifySettings) [m/N]. Throws InputError naming the record if too few rows qualify.
+double initial_compliance(const analysis::TestRecord& record, const IdentifySettings& settings);
+
+/// The E_L for which corrected beam theory (which the beam model reproduces) has compliance C at
+/// crack length a (other constants as in `material`).
+double modulus_for_compliance(const law::Specimen& specimen, const law::Material& material,
+                              double compliance);
+
+/// A beam run mapped onto openings as a displacement-controlled test sees it: before the first
+/// state the linear compliance at a0, then the states whose load-point opening exceeds every
+/// earlier one (a snap-back is passed in a jump), linear in between, the last state beyond.
+void model_at_openings(const law::SimulationResult& run, const std::vector<double>& opening,
+                       std::vector<double>& load, std::vector<double>& crack_length);
+
+/// ISO 15024's large-displacement factor F(delta, a) with l1 = arm thickness / 2.
+double large_displacement_factor(double opening, double crack_length, double arm_thickness);
+
+/// Identifies one law and J_tip from the records jointly. `specimen` gives width, height and
+/// length; each record's a0 is its first crack reading. `progress` gets occasional lines.
+Identification identify_law(const std::vector<analysis::TestRecord>& records,
+                            const law::Specimen& specimen, const law::Material& quoted,
+                            const IdentifySettings& settings,
+                            const std::function<void(const std::string&)>& progress = {});
+
+} // namespace fiberbridge::identify

@@ -1,0 +1,331 @@
+// Scene item `identify` (section Identify): the trilinear law and J_tip for which the beam model
+// reproduces the records of the Test section (include/fiberbridge/identify/identify.h). The
+// identified law, J_tip and the effective specimen (first record's a0 and calibrated E_L) are
+// handed to the simulations that follow, as `fit` hands its law.
+#include "fiberbridge/app/items.h"
+#include "fiberbridge/app/scene.h"
+#include "fiberbridge/core/csv.h"
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/plot.h"
+#include "fiberbridge/core/units.h"
+#include "fiberbridge/identify/identify.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace fiberbridge::app {
+
+using dealii::Patterns::Bool;
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+using dealii::Patterns::Selection;
+using units::kPa;
+using units::mm;
+
+void declare_identify_section(dealii::ParameterHandler& prm) {
+  prm.enter_subsection("Identify");
+  prm.declare_entry("Delta c min", "0.2", Double(0), "Lower bound of delta_c (mm).");
+  prm.declare_entry("Delta c max", "40", Double(0), "Upper bound of delta_c (mm).");
+  prm.declare_entry("Stress max", "20000", Double(0),
+                    "Upper bound of sigma_1 (kPa); sigma_2 <= sigma_1, both >= 1e-3 of it.");
+  prm.declare_entry("J tip min", "20", Double(0), "Lower bound of J_tip (J/m^2).");
+  prm.declare_entry("J tip max", "3000", Double(0), "Upper bound of J_tip (J/m^2).");
+  prm.declare_entry("Load scatter", "0.02", Double(0),
+                    "Expected load misfit as a fraction of the peak load (weights the load rows).");
+  prm.declare_entry("Crack scatter", "1", Double(0),
+                    "Expected crack-reading misfit in mm (weights the fresh crack readings).");
+  prm.declare_entry("Calibrate modulus", "true", Bool(),
+                    "E_L from each record's initial compliance by corrected beam theory; false: "
+                    "Material/E_L as given.");
+  prm.declare_entry("Compliance low", "0.1", Double(0, 1),
+                    "The initial compliance is fitted over the rows before the first crack jump "
+                    "with a load between these fractions of the peak.");
+  prm.declare_entry("Compliance high", "0.5", Double(0, 1), "See Compliance low.");
+  prm.declare_entry("Large displacement correction", "true", Bool(),
+                    "Divide the beam's small-rotation load by ISO 15024's F(delta/a).");
+  prm.declare_entry("Algorithm", "bobyqa", Selection("bobyqa|sbplx"),
+                    "NLopt bounded derivative-free method.");
+  prm.declare_entry("Max evaluations", "300", Integer(10), "Misfit evaluations per start.");
+  prm.declare_entry("Starts", "2", Integer(1), "Optimizer starts (different delta_c guesses).");
+  prm.declare_entry("Tolerance", "1e-4", Double(0, 1), "Relative change of the misfit to stop.");
+  prm.declare_entry("Number of elements", "160", Integer(4),
+                    "Beam elements on the ligament of the forward model.");
+  prm.declare_entry("Tip advance", "1", Double(0), "Beam tip advance of the forward model (mm).");
+  prm.declare_entry("Per record", "false", Bool(),
+                    "Also identify each record alone (identify.per_record in summary.json).");
+  prm.leave_subsection();
+}
+
+namespace {
+
+/// A record name as a gnuplot title (enhanced text would turn '_' into a subscript).
+std::string title_of(std::string name) {
+  std::replace(name.begin(), name.end(), '_', ' ');
+  return name;
+}
+
+identify::IdentifySettings parse_identify_section(dealii::ParameterHandler& prm) {
+  identify::IdentifySettings s;
+  prm.enter_subsection("Identify");
+  s.delta_c_min = prm.get_double("Delta c min") * mm;
+  s.delta_c_max = prm.get_double("Delta c max") * mm;
+  s.stress_max = prm.get_double("Stress max") * kPa;
+  s.j_tip_min = prm.get_double("J tip min");
+  s.j_tip_max = prm.get_double("J tip max");
+  s.load_scatter = prm.get_double("Load scatter");
+  s.crack_scatter = prm.get_double("Crack scatter") * mm;
+  s.calibrate_modulus = prm.get_bool("Calibrate modulus");
+  s.compliance_low = prm.get_double("Compliance low");
+  s.compliance_high = prm.get_double("Compliance high");
+  s.large_displacement = prm.get_bool("Large displacement correction");
+  s.algorithm = prm.get("Algorithm");
+  s.max_evaluations = prm.get_integer("Max evaluations");
+  s.starts = prm.get_integer("Starts");
+  s.relative_tolerance = prm.get_double("Tolerance");
+  s.beam.n_elements = prm.get_integer("Number of elements");
+  s.beam.tip_advance = prm.get_double("Tip advance") * mm;
+  prm.leave_subsection();
+  s.validate("Identify");
+  return s;
+}
+
+/// The records of the Test section, read as `reduce` reads them.
+std::vector<analysis::TestRecord> read_scene_records(SceneContext& ctx) {
+  auto& prm = *ctx.prm;
+  prm.enter_subsection("Test");
+  const std::string files = prm.get("Files"), columns = prm.get("Columns");
+  analysis::RecordReadOptions read;
+  read.crack_back_tolerance = prm.get_double("Crack back tolerance") * mm;
+  prm.leave_subsection();
+  read.columns = analysis::RecordColumnMap::parse(columns, ctx.scene_file + ": Test/Columns");
+  std::vector<analysis::TestRecord> records;
+  std::istringstream in(files);
+  for (std::string f; std::getline(in, f, ',');) {
+    f.erase(0, f.find_first_not_of(" \t"));
+    f.erase(f.find_last_not_of(" \t") + 1);
+    if (!f.empty())
+      for (auto& r : analysis::read_test_records(resolve_scene_path(f, ctx.scene_file), read))
+        records.push_back(std::move(r));
+  }
+  if (records.empty())
+    throw InputError(ctx.scene_file + ": 'identify' needs records in Test/Files");
+  return records;
+}
+
+Json identification_json(const identify::Identification& id) {
+  Json j = Json::object();
+  j["trilinear"] = {{"d1_mm", id.law.d1 / mm},
+                    {"sigma1_kPa", id.law.s1 / kPa},
+                    {"d2_mm", id.law.d2 / mm},
+                    {"sigma2_kPa", id.law.s2 / kPa},
+                    {"delta_c_mm", id.law.dc / mm}};
+  j["J_tip_J_m2"] = id.j_tip;
+  j["G_ss_J_m2"] = id.g_ss;
+  j["load_rms_rel"] = id.load_rms_rel;
+  j["crack_rms_mm"] = id.crack_rms / mm;
+  j["evaluations"] = id.evaluations;
+  j["wall_time_s"] = id.wall_time_s;
+  j["J_c_J_m2"] = id.law.area();
+  j["J_c_std_error_J_m2"] = json_number(id.j_c_std_error);
+  Json se = Json::object();
+  for (const auto& p : id.parameters)
+    se[p.name] = json_number(p.std_error);
+  j["std_error"] = se;
+  Json corr = Json::array();
+  for (const auto& row : id.correlation) {
+    Json r = Json::array();
+    for (double v : row)
+      r.push_back(json_number(v));
+    corr.push_back(r);
+  }
+  j["correlation"] = {{"order", {"d1", "sigma1", "d2", "sigma2", "delta_c", "J_tip"}},
+                      {"matrix", corr}};
+  j["chi2"] = id.chi2;
+  j["n_residuals"] = id.n_residuals;
+  j["forward_runs"] = id.forward_runs;
+  j["forward_time_s"] = id.forward_time_s;
+  Json recs = Json::array();
+  for (const auto& r : id.records)
+    recs.push_back({{"record", r.name},
+                    {"a0_mm", r.initial_crack / mm},
+                    {"initial_compliance_mm_N", r.initial_compliance / mm},
+                    {"E_L_effective_GPa", r.E_L * 1e-9},
+                    {"peak_load_N", r.peak_load},
+                    {"load_rms_rel", r.load_rms_rel},
+                    {"crack_rms_mm", r.crack_rms / mm},
+                    {"max_opening_over_a", r.max_opening_over_a},
+                    {"min_F", r.min_F}});
+  j["records"] = recs;
+  j["notes"] = id.notes;
+  return j;
+}
+
+void write_identification(SceneContext& ctx, const identify::Identification& id) {
+  {
+    CsvWriter w(ctx.out("identify_fit.csv"),
+                {"record", "opening_mm", "load_N", "model_load_N", "a_mm", "model_a_mm"},
+                {"measured rows and the identified beam model at the same openings"});
+    for (const auto& r : id.records)
+      for (std::size_t i = 0; i < r.opening.size(); ++i)
+        w.row({r.name}, {r.opening[i] / mm, r.load[i], r.model_load[i], r.crack_length[i] / mm,
+                         r.model_crack_length[i] / mm});
+    w.close();
+  }
+  {
+    CsvWriter w(ctx.out("identify_law.csv"),
+                {"delta_mm", "sigma_kPa", "sigma_lo_kPa", "sigma_hi_kPa"},
+                {"identified trilinear law with a one-standard-error band (Jacobian covariance)"});
+    for (std::size_t i = 0; i < id.band_delta.size(); ++i)
+      w.row({id.band_delta[i] / mm, id.band_sigma[i] / kPa, id.band_lo[i] / kPa,
+             id.band_hi[i] / kPa});
+    w.close();
+  }
+  // One curve per record: gnuplot's 'every' cannot select by label, so each record is a block.
+  std::string load_plot, crack_plot;
+  for (std::size_t k = 0; k < id.records.size(); ++k) {
+    const std::string file = "identify_fit_" + std::to_string(k) + ".csv";
+    CsvWriter w(ctx.out(file), {"opening_mm", "load_N", "model_load_N", "a_mm", "model_a_mm"});
+    const auto& r = id.records[k];
+    for (std::size_t i = 0; i < r.opening.size(); ++i)
+      w.row({r.opening[i] / mm, r.load[i], r.model_load[i], r.crack_length[i] / mm,
+             r.model_crack_length[i] / mm});
+    w.close();
+    const std::string sep = k ? ", " : "plot ";
+    load_plot += sep + "'" + file + "' using 1:2 with points pt 7 ps 0.4 lc " +
+                 std::to_string(k + 1) + " title '" + title_of(r.name) + " measured', '" + file +
+                 "' using 1:3 with lines lw 2 lc " + std::to_string(k + 1) + " title 'model'";
+    crack_plot += sep + "'" + file + "' using 1:4 with points pt 7 ps 0.4 lc " +
+                  std::to_string(k + 1) + " title '" + title_of(r.name) + " readings', '" + file +
+                  "' using 1:5 with lines lw 2 lc " + std::to_string(k + 1) + " title 'model'";
+  }
+  const std::string head = "set datafile separator ','\nset key autotitle columnhead\n";
+  auto plot = [&](const std::string& png, const std::string& body) {
+    if (run_gnuplot(ctx.output_dir, gnuplot_png_preamble(png) + head + body))
+      ctx.summary["plots"].push_back(png);
+  };
+  plot("identify_load_opening.png",
+       "set title 'identify: measured and simulated P(opening)'\nset xlabel 'load-line opening "
+       "(mm)'\nset ylabel 'load (N)'\n" +
+           load_plot + "\n");
+  plot("identify_crack_opening.png",
+       "set title 'identify: measured and simulated a(opening)'\nset xlabel 'load-line opening "
+       "(mm)'\nset ylabel 'crack length (mm)'\nset key bottom right\n" +
+           crack_plot + "\n");
+  plot("identify_law.png",
+       "set title 'identified law, one-standard-error band'\nset xlabel 'opening {/Symbol d} "
+       "(mm)'\nset ylabel '{/Symbol s} (kPa)'\nplot 'identify_law.csv' using 1:3:4 with "
+       "filledcurves fs transparent solid 0.3 title 'band', '' using 1:2 with lines lw 2 title "
+       "'identified'\n");
+}
+
+} // namespace
+
+void run_identify_item(SceneContext& ctx) {
+  const auto settings = parse_identify_section(*ctx.prm);
+  ctx.prm->enter_subsection("Identify");
+  const bool per_record = ctx.prm->get_bool("Per record");
+  ctx.prm->leave_subsection();
+  const auto records = read_scene_records(ctx);
+  const law::Specimen specimen = ctx.specimen();
+  const law::Material quoted = ctx.material();
+  auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
+  auto id = std::make_shared<identify::Identification>(
+      identify::identify_law(records, specimen, quoted, settings, progress));
+  Json block = identification_json(*id);
+  block["modulus"] = settings.calibrate_modulus
+                         ? "E_L calibrated per record from the initial compliance (CBT)"
+                         : "E_L as quoted (Material/E_L)";
+  block["E_L_quoted_GPa"] = quoted.E_L * 1e-9;
+  if (per_record && records.size() > 1) {
+    Json each = Json::array();
+    for (const auto& r : records) {
+      const auto one = identify::identify_law({r}, specimen, quoted, settings, progress);
+      Json j = identification_json(one);
+      j["record"] = r.name;
+      each.push_back(j);
+    }
+    block["per_record"] = each;
+  }
+  ctx.summary["identify"] = block;
+  write_identification(ctx, *id);
+  // Later simulations get the identified law, J_tip and the first record's specimen.
+  ctx.fitted_law = std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(id->law));
+  ctx.fitted_j_tip = id->j_tip;
+  law::Specimen s = specimen;
+  s.initial_crack = id->records.front().initial_crack;
+  law::Material m = quoted;
+  m.E_L = id->records.front().E_L;
+  ctx.identified_specimen = s;
+  ctx.identified_material = m;
+  ctx.identification = id;
+}
+
+void check_identified_against_simulations(SceneContext& ctx) {
+  // The identified law back through each simulation, on the first record's specimen: the load
+  // misfit of the simulated P(opening) against the measured one (F applied as in identify).
+  const auto& rec = ctx.identification->records.front();
+  ctx.prm->enter_subsection("Identify");
+  const bool large = ctx.prm->get_bool("Large displacement correction");
+  ctx.prm->leave_subsection();
+  Json block = Json::object();
+  std::string plot = "plot 'identify_fit_0.csv' using 1:2 with points pt 7 ps 0.4 title '" +
+                     title_of(rec.name) + " measured'";
+  for (const auto& [name, result] : ctx.results) {
+    std::vector<double> load, a;
+    identify::model_at_openings(result, rec.opening, load, a);
+    double sum = 0;
+    const std::string file = "identify_check_" + name + ".csv";
+    CsvWriter w(ctx.out(file), {"opening_mm", "load_N", "model_load_N", "a_mm", "model_a_mm"},
+                {name + " with the identified law at the record's openings"});
+    // Only the rows the simulation reached (the FEM stops at steady state).
+    const double reached = result.rcurve.back().load_point_opening;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < load.size() && rec.opening[i] <= reached; ++i, ++n) {
+      if (large)
+        load[i] /= identify::large_displacement_factor(rec.opening[i], a[i],
+                                                       ctx.specimen().arm_thickness());
+      sum += std::pow(load[i] - rec.load[i], 2);
+      w.row({rec.opening[i] / mm, rec.load[i], load[i], rec.crack_length[i] / mm, a[i] / mm});
+    }
+    w.close();
+    block[name] = {{"record", rec.name},
+                   {"load_rms_rel", std::sqrt(sum / std::max<std::size_t>(n, 1)) / rec.peak_load},
+                   {"rows_compared", n},
+                   {"rows", load.size()},
+                   {"final_a_mm", result.rcurve.back().a / mm}};
+    plot += ", '" + file + "' using 1:3 with lines lw 2 title '" + name + "'";
+  }
+  ctx.summary["identify_check"] = block;
+  // The simulations' R(a) beside the record's measured R(a) when `reduce` ran in this scene.
+  if (std::filesystem::exists(ctx.out("rcurve_test.csv"))) {
+    std::string r_plot = "plot 'rcurve_test.csv' using 2:(strcol(1) eq '" + rec.name +
+                         "' ? $4 : NaN) every ::1 with points pt 7 ps 0.5 title '" +
+                         title_of(rec.name) + " R_{energy} measured', '' using 2:(strcol(1) eq '" +
+                         rec.name +
+                         "' ? $7 : NaN) every ::1 with points pt 6 ps 0.5 title 'R_{MBT} measured'";
+    for (const auto& [name, result] : ctx.results)
+      r_plot += ", 'rcurve_" + name + ".csv' using 1:4 every ::1 with lines lw 2 title '" + name +
+                " R_J, identified law'";
+    if (run_gnuplot(ctx.output_dir,
+                    gnuplot_png_preamble("identify_check_R_a.png") +
+                        "set datafile separator ','\nset title 'identified law in the "
+                        "simulations against the measured R(a)'\nset xlabel 'crack length a "
+                        "(mm)'\nset ylabel 'R (J/m^2)'\nset key bottom right\n" +
+                        r_plot + "\n"))
+      ctx.summary["plots"].push_back("identify_check_R_a.png");
+  }
+  if (run_gnuplot(ctx.output_dir,
+                  gnuplot_png_preamble("identify_check_load.png") +
+                      "set datafile separator ','\nset title 'identified law in the "
+                      "simulations against the record'\nset xlabel 'load-line opening (mm)'\n"
+                      "set ylabel 'load (N)'\n" +
+                      plot + "\n"))
+    ctx.summary["plots"].push_back("identify_check_load.png");
+}
+
+} // namespace fiberbridge::app

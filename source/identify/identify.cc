@@ -1,0 +1,520 @@
+#include "fiberbridge/identify/identify.h"
+
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
+#include "fiberbridge/identify/covariance.h"
+
+#include <nlopt.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace fiberbridge::identify {
+
+using units::kPa;
+using units::mm;
+
+namespace {
+
+std::string fmt(double v, int precision = 4) {
+  std::ostringstream s;
+  s.precision(precision);
+  s << v;
+  return s.str();
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+/// Physical parameters in the order of the report: d1, s1, d2, s2, dc [m, Pa], J_tip [J/m^2].
+constexpr int n_parameters = 6;
+using Parameters = std::array<double, n_parameters>;
+const char* const parameter_names[n_parameters] = {"d1_mm",      "sigma1_kPa", "d2_mm",
+                                                   "sigma2_kPa", "delta_c_mm", "J_tip_J_m2"};
+const double parameter_units[n_parameters] = {mm, kPa, mm, kPa, mm, 1.0};
+
+law::TrilinearParameters trilinear_of(const Parameters& p) {
+  return {p[0], p[1], p[2], p[3], p[4]};
+}
+
+/// The optimizer works on u in [0,1]^6: delta_c, s1 and J_tip on log scales between their
+/// bounds; d1/dc, (d2 - d1)/(dc - d1) and s2/s1 on linear ranges. Any u gives an ordered,
+/// positive trilinear law (0 < d1 < d2 < dc, s2 <= s1), so the bounds are the only constraints.
+struct Mapping {
+  double log_dc_lo, log_dc_hi, log_s_lo, log_s_hi, log_j_lo, log_j_hi;
+  static constexpr double t1_lo = 0.002, t1_hi = 0.4, t2_lo = 0.02, t2_hi = 0.95;
+  static constexpr double r_lo = 0.01, r_hi = 1.0;
+
+  explicit Mapping(const IdentifySettings& s)
+      : log_dc_lo(std::log(s.delta_c_min)), log_dc_hi(std::log(s.delta_c_max)),
+        log_s_lo(std::log(s.stress_max * 1e-3)), log_s_hi(std::log(s.stress_max)),
+        log_j_lo(std::log(s.j_tip_min)), log_j_hi(std::log(s.j_tip_max)) {}
+
+  static double lerp(double lo, double hi, double u) { return lo + (hi - lo) * u; }
+  static double unlerp(double lo, double hi, double v) {
+    return std::clamp((v - lo) / (hi - lo), 0.0, 1.0);
+  }
+  Parameters physical(const std::vector<double>& u) const {
+    const double dc = std::exp(lerp(log_dc_lo, log_dc_hi, u[0]));
+    const double d1 = lerp(t1_lo, t1_hi, u[1]) * dc;
+    const double d2 = d1 + lerp(t2_lo, t2_hi, u[2]) * (dc - d1);
+    const double s1 = std::exp(lerp(log_s_lo, log_s_hi, u[3]));
+    const double s2 = lerp(r_lo, r_hi, u[4]) * s1;
+    return {d1, s1, d2, s2, dc, std::exp(lerp(log_j_lo, log_j_hi, u[5]))};
+  }
+  std::vector<double> normalized(const Parameters& p) const {
+    return {unlerp(log_dc_lo, log_dc_hi, std::log(p[4])),
+            unlerp(t1_lo, t1_hi, p[0] / p[4]),
+            unlerp(t2_lo, t2_hi, (p[2] - p[0]) / (p[4] - p[0])),
+            unlerp(log_s_lo, log_s_hi, std::log(p[1])),
+            unlerp(r_lo, r_hi, p[3] / p[1]),
+            unlerp(log_j_lo, log_j_hi, std::log(p[5]))};
+  }
+};
+
+/// One record prepared for the misfit: its specimen, modulus and weights.
+struct PreparedRecord {
+  const analysis::TestRecord* record;
+  law::Specimen specimen;
+  law::Material material;
+  double peak_load = 0;
+  double compliance = 0;
+  std::vector<std::size_t> crack_rows; ///< fresh crack readings (the first excluded)
+};
+
+class Misfit {
+public:
+  Misfit(const std::vector<PreparedRecord>& records, const IdentifySettings& settings)
+      : records_(records), settings_(settings) {}
+
+  /// Weighted residuals (load rows, then fresh crack readings, record after record); the model
+  /// curves go to `fits` if given.
+  std::vector<double> residuals(const Parameters& p, std::vector<RecordFit>* fits = nullptr) {
+    std::vector<double> r;
+    for (const auto& pr : records_) {
+      const auto& rec = *pr.record;
+      std::vector<double> model_load, model_a;
+      simulate(pr, p, model_load, model_a);
+      const double h = pr.specimen.arm_thickness();
+      double min_f = 1;
+      for (std::size_t i = 0; i < rec.opening.size(); ++i) {
+        if (settings_.large_displacement) {
+          const double f = large_displacement_factor(rec.opening[i], model_a[i], h);
+          min_f = std::min(min_f, f);
+          model_load[i] /= f;
+        }
+        r.push_back((model_load[i] - rec.load[i]) / (settings_.load_scatter * pr.peak_load));
+      }
+      for (std::size_t i : pr.crack_rows)
+        r.push_back((model_a[i] - rec.crack_length[i]) / settings_.crack_scatter);
+      if (fits) {
+        RecordFit f;
+        f.name = rec.name;
+        f.initial_crack = pr.specimen.initial_crack;
+        f.initial_compliance = pr.compliance;
+        f.E_L = pr.material.E_L;
+        f.peak_load = pr.peak_load;
+        f.opening = rec.opening;
+        f.load = rec.load;
+        f.crack_length = rec.crack_length;
+        f.model_load = model_load;
+        f.model_crack_length = model_a;
+        f.min_F = min_f;
+        double sp = 0, sa = 0;
+        for (std::size_t i = 0; i < rec.opening.size(); ++i) {
+          sp += std::pow(model_load[i] - rec.load[i], 2);
+          f.max_opening_over_a =
+              std::max(f.max_opening_over_a, rec.opening[i] / rec.crack_length[i]);
+        }
+        for (std::size_t i : pr.crack_rows)
+          sa += std::pow(model_a[i] - rec.crack_length[i], 2);
+        f.load_rms_rel = std::sqrt(sp / rec.opening.size()) / pr.peak_load;
+        f.crack_rms = pr.crack_rows.empty() ? 0 : std::sqrt(sa / pr.crack_rows.size());
+        fits->push_back(std::move(f));
+      }
+    }
+    return r;
+  }
+
+  double chi2(const Parameters& p) {
+    double s = 0;
+    for (double v : residuals(p))
+      s += v * v;
+    return s;
+  }
+
+  int forward_runs = 0;
+  double forward_time_s = 0;
+  std::string last_failure;
+
+private:
+  void simulate(const PreparedRecord& pr, const Parameters& p, std::vector<double>& load,
+                std::vector<double>& a) {
+    const auto& rec = *pr.record;
+    beam::BeamParameters bp = settings_.beam;
+    const double a_last = rec.crack_length.back();
+    const double min_lig = bp.minimum_ligament > 0 ? bp.minimum_ligament : pr.specimen.height;
+    // Run a few advances past the last reading (the model may lag it), within the ligament.
+    bp.final_crack_length =
+        std::min(a_last + 5 * bp.tip_advance, pr.specimen.length - min_lig - 2 * bp.tip_advance);
+    const auto t = std::chrono::steady_clock::now();
+    ++forward_runs;
+    try {
+      const auto law = law::make_trilinear(trilinear_of(p));
+      const auto run = beam::simulate_dcb(pr.specimen, pr.material, law, p[5], bp);
+      model_at_openings(run, rec.opening, load, a);
+    } catch (const std::exception& e) {
+      // A law the beam cannot follow from initiation: the model carries no load, a large but
+      // finite misfit that keeps the optimizer's quadratic model usable.
+      last_failure = e.what();
+      load.assign(rec.opening.size(), 0.0);
+      a.assign(rec.opening.size(), pr.specimen.initial_crack);
+    }
+    forward_time_s += seconds_since(t);
+  }
+
+  const std::vector<PreparedRecord>& records_;
+  const IdentifySettings& settings_;
+};
+
+/// CBT energy release rate of a record row (P/P(J = 1 J/m^2))^2: a start value only.
+double cbt_g(const law::Specimen& s, const law::Material& m, double load, double a) {
+  const double unit = law::cbt_load_at_crack_length(s, m, 1.0, a);
+  return std::pow(load / unit, 2);
+}
+
+Parameters start_value(const std::vector<PreparedRecord>& records, const IdentifySettings& settings,
+                       double dc_factor) {
+  // J_tip from the load at the first crack jump, G_ss from the last third of the rows, delta_c
+  // from the opening at the original notch root at the end (rigid arms about the tip).
+  double j_tip = 0, g_end = 0, root_opening = 0;
+  for (const auto& pr : records) {
+    const auto& rec = *pr.record;
+    const std::size_t first = pr.crack_rows.empty() ? rec.load.size() / 4 : pr.crack_rows.front();
+    j_tip += cbt_g(pr.specimen, pr.material, rec.load[first], rec.crack_length[first - 1]);
+    double g = 0;
+    const std::size_t from = 2 * rec.load.size() / 3;
+    for (std::size_t i = from; i < rec.load.size(); ++i)
+      g += cbt_g(pr.specimen, pr.material, rec.load[i], rec.crack_length[i]);
+    g_end += g / static_cast<double>(rec.load.size() - from);
+    const double a_end = rec.crack_length.back();
+    root_opening += rec.opening.back() * (a_end - pr.specimen.initial_crack) / a_end;
+  }
+  const double n = static_cast<double>(records.size());
+  j_tip = std::clamp(j_tip / n, settings.j_tip_min, settings.j_tip_max);
+  const double area = std::max(g_end / n - j_tip, 0.5 * j_tip);
+  const double dc = std::clamp(dc_factor * root_opening / n, settings.delta_c_min * 1.01,
+                               settings.delta_c_max * 0.99);
+  const double d1 = 0.05 * dc, d2 = d1 + 0.3 * (dc - d1), ratio = 0.3;
+  const double s1 = std::clamp(2 * area / (d2 + ratio * (dc - d1)), settings.stress_max * 1.1e-3,
+                               settings.stress_max * 0.99);
+  return {d1, s1, d2, ratio * s1, dc, j_tip};
+}
+
+struct ObjectiveData {
+  Misfit* misfit;
+  const Mapping* mapping;
+  int evaluations = 0;
+  double best = std::numeric_limits<double>::infinity();
+  const std::function<void(const std::string&)>* progress;
+};
+
+double objective(const std::vector<double>& u, std::vector<double>&, void* data) {
+  auto& d = *static_cast<ObjectiveData*>(data);
+  const double f = d.misfit->chi2(d.mapping->physical(u));
+  ++d.evaluations;
+  d.best = std::min(d.best, f);
+  if (*d.progress && d.evaluations % 50 == 0)
+    (*d.progress)("identify: " + std::to_string(d.evaluations) + " evaluations, best chi^2 " +
+                  fmt(d.best));
+  return f;
+}
+
+/// A bounded NLopt run on [0,1]^6 from `u` (updated), returning the misfit reached.
+double run_optimizer(const IdentifySettings& settings, ObjectiveData& data, double tolerance,
+                     double initial_step, std::vector<double>& u, nlopt::result& code) {
+  nlopt::opt opt(settings.algorithm == "bobyqa" ? nlopt::LN_BOBYQA : nlopt::LN_SBPLX, n_parameters);
+  opt.set_lower_bounds(std::vector<double>(n_parameters, 0.0));
+  opt.set_upper_bounds(std::vector<double>(n_parameters, 1.0));
+  opt.set_min_objective(objective, &data);
+  opt.set_maxeval(settings.max_evaluations);
+  opt.set_ftol_rel(tolerance);
+  opt.set_initial_step(initial_step);
+  double f = 0;
+  try {
+    code = opt.optimize(u, f);
+  } catch (const nlopt::roundoff_limited&) {
+    code = nlopt::ROUNDOFF_LIMITED;
+    f = data.misfit->chi2(data.mapping->physical(u));
+  }
+  return f;
+}
+
+} // namespace
+
+void IdentifySettings::validate(const std::string& c) const {
+  if (!(delta_c_min > 0 && delta_c_max > delta_c_min))
+    throw InputError(c + "/Delta c range: need 0 < min < max (mm)");
+  if (!(stress_max > 0))
+    throw InputError(c + "/Stress max: must be positive (kPa)");
+  if (!(j_tip_min > 0 && j_tip_max > j_tip_min))
+    throw InputError(c + "/J tip range: need 0 < min < max (J/m^2)");
+  if (!(load_scatter > 0))
+    throw InputError(c + "/Load scatter: must be positive (fraction of the peak load)");
+  if (!(crack_scatter > 0))
+    throw InputError(c + "/Crack scatter: must be positive (mm)");
+  if (!(compliance_low >= 0 && compliance_high > compliance_low && compliance_high <= 1))
+    throw InputError(c + "/Compliance window: need 0 <= low < high <= 1 (fractions of the peak)");
+  if (algorithm != "bobyqa" && algorithm != "sbplx")
+    throw InputError(c + "/Algorithm: expected bobyqa or sbplx, got '" + algorithm + "'");
+  if (max_evaluations < 10)
+    throw InputError(c + "/Max evaluations: need at least 10");
+  if (starts < 1)
+    throw InputError(c + "/Starts: need at least 1");
+  if (!(relative_tolerance > 0 && relative_tolerance < 1))
+    throw InputError(c + "/Tolerance: must be in (0, 1)");
+  beam.validate(c);
+}
+
+double initial_compliance(const analysis::TestRecord& rec, const IdentifySettings& s) {
+  const double peak = *std::max_element(rec.load.begin(), rec.load.end());
+  // Before initiation: up to the first reading beyond a0 by more than three times the reading
+  // scatter (a noisy tracker changes its reading before the crack grows).
+  std::size_t end = 0;
+  while (end < rec.load.size() &&
+         rec.crack_length[end] - rec.crack_length.front() <= 3 * s.crack_scatter)
+    ++end;
+  double n = 0, sp = 0, sd = 0, spp = 0, spd = 0;
+  for (std::size_t i = 0; i < end; ++i)
+    if (rec.load[i] >= s.compliance_low * peak && rec.load[i] <= s.compliance_high * peak) {
+      n += 1;
+      sp += rec.load[i];
+      sd += rec.opening[i];
+      spp += rec.load[i] * rec.load[i];
+      spd += rec.load[i] * rec.opening[i];
+    }
+  const double var = spp - sp * sp / n;
+  if (n < 3 || !(var > 0))
+    throw InputError(rec.source + ": record '" + rec.name + "' has " + std::to_string(int(n)) +
+                     " rows before the crack grows with a load between " +
+                     fmt(100 * s.compliance_low) + " and " + fmt(100 * s.compliance_high) +
+                     " % of the peak; Identify/Compliance window needs at least 3");
+  return (spd - sp * sd / n) / var;
+}
+
+double modulus_for_compliance(const law::Specimen& specimen, const law::Material& material,
+                              double compliance) {
+  // CBT compliance falls monotonically with E_L (chi grows only like its square root):
+  // bisection on log E_L.
+  double lo = std::log(material.E_L / 50), hi = std::log(material.E_L * 50);
+  law::Material m = material;
+  for (int it = 0; it < 100; ++it) {
+    m.E_L = std::exp(0.5 * (lo + hi));
+    if (law::cbt_opening(specimen, m, 1.0, specimen.initial_crack) > compliance)
+      lo = std::log(m.E_L);
+    else
+      hi = std::log(m.E_L);
+  }
+  return std::exp(0.5 * (lo + hi));
+}
+
+void model_at_openings(const law::SimulationResult& run, const std::vector<double>& opening,
+                       std::vector<double>& load, std::vector<double>& crack_length) {
+  const auto& rc = run.rcurve;
+  std::vector<const law::RCurvePoint*> path;
+  for (const auto& p : rc)
+    if (path.empty() || p.load_point_opening > path.back()->load_point_opening)
+      path.push_back(&p);
+  load.resize(opening.size());
+  crack_length.resize(opening.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < opening.size(); ++i) {
+    const double d = opening[i];
+    const auto& first = *path.front();
+    if (d <= first.load_point_opening) {
+      load[i] = first.load * d / first.load_point_opening;
+      crack_length[i] = first.a;
+      continue;
+    }
+    while (k + 1 < path.size() && path[k + 1]->load_point_opening < d)
+      ++k;
+    if (k + 1 >= path.size()) {
+      load[i] = path.back()->load;
+      crack_length[i] = path.back()->a;
+      continue;
+    }
+    const auto &p = *path[k], &q = *path[k + 1];
+    const double w = (d - p.load_point_opening) / (q.load_point_opening - p.load_point_opening);
+    load[i] = p.load + w * (q.load - p.load);
+    crack_length[i] = p.a + w * (q.a - p.a);
+  }
+}
+
+double large_displacement_factor(double opening, double crack_length, double arm_thickness) {
+  const double r = opening / crack_length;
+  return 1 - 0.3 * r * r - 1.5 * opening * (0.5 * arm_thickness) / (crack_length * crack_length);
+}
+
+Identification identify_law(const std::vector<analysis::TestRecord>& records,
+                            const law::Specimen& specimen, const law::Material& quoted,
+                            const IdentifySettings& settings,
+                            const std::function<void(const std::string&)>& progress) {
+  const auto t0 = std::chrono::steady_clock::now();
+  settings.validate();
+  if (records.empty())
+    throw InputError("Identify: no records to identify from");
+  std::vector<PreparedRecord> prepared;
+  for (const auto& rec : records) {
+    PreparedRecord pr;
+    pr.record = &rec;
+    pr.specimen = specimen;
+    pr.specimen.initial_crack = rec.crack_length.front();
+    pr.specimen.validate("Specimen (record " + rec.name + ")");
+    pr.material = quoted;
+    pr.peak_load = *std::max_element(rec.load.begin(), rec.load.end());
+    pr.compliance = initial_compliance(rec, settings);
+    if (settings.calibrate_modulus)
+      pr.material.E_L = modulus_for_compliance(pr.specimen, quoted, pr.compliance);
+    const auto rows = analysis::crack_reading_rows(rec);
+    pr.crack_rows.assign(rows.begin() + 1, rows.end());
+    if (progress)
+      progress("identify: record " + rec.name + ": a0 " + fmt(pr.specimen.initial_crack / mm) +
+               " mm, initial compliance " + fmt(pr.compliance / mm) + " mm/N, E_L " +
+               fmt(pr.material.E_L * 1e-9) + " GPa");
+    prepared.push_back(pr);
+  }
+
+  Misfit misfit(prepared, settings);
+  const Mapping mapping(settings);
+  Identification out;
+  ObjectiveData data{&misfit, &mapping, 0, std::numeric_limits<double>::infinity(), &progress};
+  std::vector<double> best_u;
+  double best_f = std::numeric_limits<double>::infinity();
+  // Starts differ in delta_c (the parameter the record constrains least directly).
+  const double dc_factors[] = {0.5, 1.5, 0.2, 3.0};
+  for (int s = 0; s < settings.starts; ++s) {
+    const Parameters p0 = start_value(prepared, settings, dc_factors[s % 4] * (1 + s / 4));
+    std::vector<double> u = mapping.normalized(p0);
+    nlopt::result code{};
+    const double f = run_optimizer(settings, data, settings.relative_tolerance, 0.1, u, code);
+    out.notes.push_back("start " + std::to_string(s + 1) + ": NLopt " + settings.algorithm +
+                        " stopped with code " + std::to_string(static_cast<int>(code)) +
+                        " at chi^2 " + fmt(f));
+    if (f < best_f) {
+      best_f = f;
+      best_u = u;
+    }
+  }
+  {
+    // Polish: BOBYQA again from the best start with a small trust region (the first runs stop on
+    // the relative tolerance while the d2-s2 valley is still being followed).
+    std::vector<double> u = best_u;
+    nlopt::result code{};
+    const double f =
+        run_optimizer(settings, data, 0.1 * settings.relative_tolerance, 0.02, u, code);
+    out.notes.push_back("polish from the best start: chi^2 " + fmt(best_f) + " -> " + fmt(f));
+    if (f < best_f) {
+      best_f = f;
+      best_u = u;
+    }
+  }
+  out.evaluations = data.evaluations;
+  const Parameters best = mapping.physical(best_u);
+
+  // Uncertainty: Jacobian of the weighted residuals by central differences (2 % steps: the
+  // beam's discrete advances make the misfit piecewise smooth below about 1 %).
+  const std::vector<double> r0 = misfit.residuals(best, &out.records);
+  std::vector<std::vector<double>> jac(r0.size(), std::vector<double>(n_parameters));
+  for (int j = 0; j < n_parameters; ++j) {
+    Parameters plus = best, minus = best;
+    const double step = 0.02 * best[j];
+    plus[j] += step;
+    minus[j] -= step;
+    const auto rp = misfit.residuals(plus), rm = misfit.residuals(minus);
+    for (std::size_t i = 0; i < r0.size(); ++i)
+      jac[i][j] = (rp[i] - rm[i]) / (2 * step);
+  }
+  out.chi2 = 0;
+  for (double v : r0)
+    out.chi2 += v * v;
+  out.n_residuals = r0.size();
+  const Covariance cov = covariance_from_jacobian(jac, out.chi2);
+  out.law = trilinear_of(best);
+  out.j_tip = best[5];
+  out.g_ss = out.j_tip + out.law.area();
+  for (int j = 0; j < n_parameters; ++j)
+    out.parameters.push_back({parameter_names[j], best[j] / parameter_units[j],
+                              std::sqrt(std::max(cov.matrix[j][j], 0.0)) / parameter_units[j]});
+  out.correlation = cov.correlation;
+  for (const auto& n : cov.notes)
+    out.notes.push_back(n);
+  for (int i = 0; i < n_parameters; ++i) {
+    for (int j = i + 1; j < n_parameters; ++j)
+      if (std::abs(cov.correlation[i][j]) > 0.95)
+        out.notes.push_back(std::string(parameter_names[i]) + " and " + parameter_names[j] +
+                            " are correlated at " + fmt(cov.correlation[i][j], 3) +
+                            ": the records identify a combination of them, not each one");
+    if (out.parameters[i].std_error > 0.5 * out.parameters[i].value)
+      out.notes.push_back(std::string(parameter_names[i]) +
+                          " is poorly identified (standard "
+                          "error " +
+                          fmt(100 * out.parameters[i].std_error / out.parameters[i].value, 3) +
+                          " % of its value)");
+  }
+  // J_c and the law's band by linear propagation of the covariance (law parameters only).
+  const auto& l = out.law;
+  const double g_area[5] = {-0.5 * l.s2, 0.5 * l.d2, 0.5 * l.s1, 0.5 * (l.dc - l.d1), 0.5 * l.s2};
+  double var_area = 0;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j)
+      var_area += g_area[i] * cov.matrix[i][j] * g_area[j];
+  out.j_c_std_error = std::sqrt(std::max(var_area, 0.0));
+  const auto law = law::make_trilinear(l);
+  for (int k = 0; k <= 100; ++k) {
+    const double d = 1.1 * l.dc * k / 100.0;
+    double g[5];
+    for (int j = 0; j < 5; ++j) {
+      Parameters p = best;
+      const double h = 1e-4 * best[j];
+      p[j] += h;
+      const double sp = law::make_trilinear(trilinear_of(p)).envelope(d);
+      p[j] -= 2 * h;
+      const double sm = law::make_trilinear(trilinear_of(p)).envelope(d);
+      g[j] = (sp - sm) / (2 * h);
+    }
+    double var = 0;
+    for (int i = 0; i < 5; ++i)
+      for (int j = 0; j < 5; ++j)
+        var += g[i] * cov.matrix[i][j] * g[j];
+    const double sigma = law.envelope(d), sd = std::sqrt(std::max(var, 0.0));
+    out.band_delta.push_back(d);
+    out.band_sigma.push_back(sigma);
+    out.band_lo.push_back(std::max(0.0, sigma - sd));
+    out.band_hi.push_back(sigma + sd);
+  }
+  double sp = 0, sa = 0;
+  std::size_t np = 0, na = 0;
+  for (const auto& f : out.records) {
+    sp += std::pow(f.load_rms_rel, 2) * f.opening.size();
+    np += f.opening.size();
+    const std::size_t n = analysis::crack_reading_rows(records[&f - &out.records[0]]).size() - 1;
+    sa += std::pow(f.crack_rms, 2) * n;
+    na += n;
+  }
+  out.load_rms_rel = std::sqrt(sp / np);
+  out.crack_rms = na ? std::sqrt(sa / na) : 0;
+  if (!misfit.last_failure.empty())
+    out.notes.push_back("some trial laws could not be simulated (last: " + misfit.last_failure +
+                        "); they were scored as carrying no load");
+  out.forward_runs = misfit.forward_runs;
+  out.forward_time_s = misfit.forward_time_s;
+  out.wall_time_s = seconds_since(t0);
+  return out;
+}
+
+} // namespace fiberbridge::identify

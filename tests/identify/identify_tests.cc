@@ -1,0 +1,101 @@
+// Identification of the bridging law from test records (include/fiberbridge/identify/identify.h).
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
+#include "fiberbridge/identify/identify.h"
+#include "record_specimen.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+using namespace fiberbridge;
+using namespace fiberbridge::identify;
+using identify::testing::record_material;
+using identify::testing::record_specimen;
+using units::mm;
+
+namespace {
+
+analysis::TestRecord shared_record(const std::string& name) {
+  analysis::RecordReadOptions o;
+  o.columns = analysis::RecordColumnMap::parse(
+      "time_s: Time, opening_mm: Disp, load_N: Force, a_mm: CrackExt", "test");
+  return analysis::read_test_records(
+             std::string(FIBERBRIDGE_DATA_DIR) + "/dcb_records/" + name + "_Toughness.csv", o)
+      .at(0);
+}
+
+} // namespace
+
+TEST(Identify, SharedRecords) {
+  for (const char* name : {"DCB-01", "DCB-02", "DCB-03", "DCB-05"}) {
+    const auto rec = shared_record(name);
+    IdentifySettings s;
+    const auto id = identify_law({rec}, record_specimen(), record_material(19.3e9), s,
+                                 [](const std::string& l) { std::printf("%s\n", l.c_str()); });
+    std::printf("%s: E_L %.4g GPa, d1 %.4g mm s1 %.4g kPa d2 %.4g mm s2 %.4g kPa dc %.4g mm "
+                "J_tip %.4g G_ss %.4g | load rms %.4g %% crack rms %.4g mm | %d evals, %d runs, "
+                "%.3g s (forward %.3g s)\n",
+                name, id.records[0].E_L * 1e-9, id.law.d1 / mm, id.law.s1 / 1e3, id.law.d2 / mm,
+                id.law.s2 / 1e3, id.law.dc / mm, id.j_tip, id.g_ss, 100 * id.load_rms_rel,
+                id.crack_rms / mm, id.evaluations, id.forward_runs, id.wall_time_s,
+                id.forward_time_s);
+    for (const auto& p : id.parameters)
+      std::printf("  %s = %.4g +- %.3g\n", p.name.c_str(), p.value, p.std_error);
+    for (const auto& n : id.notes)
+      std::printf("  note: %s\n", n.c_str());
+    // "Reproduces the measured load-opening curve": the RMS load misfit stays under 4 % of the
+    // peak (measured 1.3-3.1 %, docs/verification.md), well below the 9 % spread of the four
+    // replicates' peak loads (91-100 N), so the law describes each record better than the
+    // replicates describe each other.
+    EXPECT_LT(id.load_rms_rel, 0.04) << name;
+    // Crack readings: optical tracking steps of 1-5 mm (DCB-03's readings lag by up to ~10 mm
+    // at the end); RMS under 6 mm.
+    EXPECT_LT(id.crack_rms, 6 * mm) << name;
+    // The identified law must carry most of the toughness rise the records show (G_I column
+    // about 1 kJ/m^2 at the end): G_ss between 700 and 1500 J/m^2.
+    EXPECT_GT(id.g_ss, 700) << name;
+    EXPECT_LT(id.g_ss, 1500) << name;
+  }
+}
+
+TEST(Identify, BadSettingsNameTheKey) {
+  auto message = [](IdentifySettings s) {
+    try {
+      s.validate("Identify");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  IdentifySettings s;
+  s.delta_c_max = s.delta_c_min / 2;
+  EXPECT_NE(message(s).find("Identify/Delta c range"), std::string::npos) << message(s);
+  s = {};
+  s.algorithm = "newton";
+  EXPECT_NE(message(s).find("Identify/Algorithm"), std::string::npos) << message(s);
+  s = {};
+  s.load_scatter = 0;
+  EXPECT_NE(message(s).find("Identify/Load scatter"), std::string::npos) << message(s);
+  s = {};
+  s.compliance_high = 0.05;
+  EXPECT_NE(message(s).find("Identify/Compliance window"), std::string::npos) << message(s);
+}
+
+TEST(Identify, ModulusFromComplianceInvertsCbt) {
+  // The calibration inverts corrected beam theory, which the beam model reproduces: the beam's
+  // initiation state has the CBT compliance of the calibrated modulus to 0.5 % (measured 0.15 %
+  // here; the beam's tip lumping is O(h_e^2), 0.23 % at 400 elements, include/.../dcb_beam.h).
+  auto s = record_specimen();
+  const auto m = record_material(19.3e9);
+  const double c = 0.037 * mm; // DCB-01's initial compliance, m/N
+  law::Material cal = m;
+  cal.E_L = modulus_for_compliance(s, m, c);
+  EXPECT_NEAR(law::cbt_opening(s, cal, 1.0, s.initial_crack) / c, 1.0, 1e-9);
+  const auto law = law::make_trilinear({0.05 * mm, 700e3, 1.5 * mm, 100e3, 4 * mm});
+  beam::BeamParameters bp;
+  bp.final_crack_length = s.initial_crack + 2 * mm;
+  const auto run = beam::simulate_dcb(s, cal, law, 400, bp);
+  const auto& first = run.rcurve.front();
+  EXPECT_NEAR(first.load_point_opening / first.load / c, 1.0, 5e-3);
+}
