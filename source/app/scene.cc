@@ -151,9 +151,8 @@ void print_scene_parameters(std::ostream& out) {
   prm.print_parameters(out, dealii::ParameterHandler::PRM);
 }
 
-std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides) {
-  const auto t0 = std::chrono::steady_clock::now();
-  dealii::ParameterHandler prm;
+std::vector<std::string> read_scene(dealii::ParameterHandler& prm, const std::string& prm_file,
+                                    const std::vector<std::string>& overrides) {
   declare_everything(prm);
   if (!std::filesystem::exists(prm_file))
     throw InputError(prm_file + ": scene file not found");
@@ -171,7 +170,6 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
   if (wanted.empty())
     throw InputError(prm_file + ": 'Run' lists no items; choose from " +
                      std::string(all_item_names));
-  std::set<std::string> wanted_set(wanted.begin(), wanted.end());
   for (const auto& w : wanted) {
     bool known = false;
     for (const auto& item : scene_items())
@@ -184,6 +182,14 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
       throw InputError(prm_file + ": unknown Run item '" + w + "', expected one of " + all);
     }
   }
+  return wanted;
+}
+
+std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides) {
+  const auto t0 = std::chrono::steady_clock::now();
+  dealii::ParameterHandler prm;
+  const auto wanted = read_scene(prm, prm_file, overrides);
+  std::set<std::string> wanted_set(wanted.begin(), wanted.end());
 
   SceneContext ctx;
   ctx.prm = &prm;
