@@ -2,7 +2,10 @@
 # Installs the Debian 12 packages fiberbridge needs, only those that are missing (root or sudo).
 set -euo pipefail
 packages=(build-essential cmake libdeal.ii-dev libboost-program-options-dev libboost-dev
-          libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev gnuplot-nox clang-format)
+          libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev gnuplot-nox clang-format
+          clang libclang-rt-14-dev libomp-14-dev)
+# clang + compiler-rt (libFuzzer, ASan/UBSan runtimes) + libomp: the sanitized fuzz build of the
+# CI command (FIBERBRIDGE_FUZZ=ON, README "Two commands").
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
