@@ -141,6 +141,7 @@ int cmd_extract(const std::vector<std::string>& args) {
   const auto fit = app::run_trilinear_fit(e, f, out, summary);
   app::plot_extraction(e, &fit, out, summary);
   write_json_atomically(out + "/summary.json", summary);
+  app::mark_run_complete(out);
   std::cout << "J_tip " << e.steady.j_tip << " J/m^2, G_ss " << e.steady.G_ss << " J/m^2, delta_c "
             << e.steady.delta_c / units::mm << " mm; trilinear sigma1 " << fit.law.s1 / units::kPa
             << " kPa, sigma2 " << fit.law.s2 / units::kPa << " kPa; results in " << out << "\n";
@@ -166,6 +167,7 @@ int cmd_rank(const std::vector<std::string>& args) {
   o.table_file = vm["table"].as<std::string>();
   app::run_ranking(o, out, summary);
   write_json_atomically(out + "/summary.json", summary);
+  app::mark_run_complete(out);
   std::cout << "ranking (most durable first):";
   for (const auto& m : summary["ranking"])
     std::cout << " " << m.get<std::string>();

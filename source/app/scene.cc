@@ -216,13 +216,13 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
   }
   ctx.summary["wall_time_s"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (writer) {
-    std::ofstream used(ctx.out("parameters_used.prm"));
-    prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
-  }
+  std::ostringstream used;
+  prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
+  write_file_atomically(ctx.out("parameters_used.prm"), used.str());
   const std::string report = text_report(ctx.summary);
   write_file_atomically(ctx.out("report.txt"), report);
   write_json_atomically(ctx.out("summary.json"), ctx.summary);
+  mark_run_complete(ctx.output_dir);
   if (writer)
     std::cout << report;
   return ctx.output_dir;

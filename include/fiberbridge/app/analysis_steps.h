@@ -57,8 +57,13 @@ struct RankOptions {
 /// PNGs per material; adds `ranking`, `degradation`, `consistency` to summary.
 void run_ranking(const RankOptions& o, const std::string& out_dir, Json& summary);
 
-/// Removes a stale summary.json so that a failed run never leaves an old one looking current.
+/// Name of the file that marks an output directory as holding no complete run.
+inline constexpr const char* incomplete_marker = "RUN_INCOMPLETE.txt";
+/// At the start of a run: writes the incomplete marker, then removes a stale summary.json (so a
+/// failed or killed run never leaves an old one looking current) and leftover *.partial files.
 void remove_stale_summary(const std::string& out_dir);
+/// After summary.json is in place: removes the incomplete marker.
+void mark_run_complete(const std::string& out_dir);
 /// Creates the directory (and parents); InputError when impossible.
 void ensure_directory(const std::string& dir);
 
