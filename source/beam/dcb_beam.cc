@@ -4,6 +4,7 @@
 #include "fiberbridge/beam/arm_on_foundation.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
+#include "fiberbridge/law/numerical_fault.h"
 
 #include <algorithm>
 #include <array>
@@ -558,6 +559,7 @@ SimulationResult DcbBeamSolver::run() {
     }
     p.external_work = work;
     dissipation.push_back(work - p.strain_energy - p.zone_recoverable);
+    law::check_rcurve_point(p); // NaN/Inf ends the run naming the column
     result.rcurve.push_back(p);
 
     if (!moved && p.root > a0 + 1e-12 * L) {
@@ -720,6 +722,7 @@ law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Mat
                                    const law::TractionLaw& law, double j_tip,
                                    const BeamParameters& parameters,
                                    const std::function<void(const std::string&)>& progress) {
+  law::begin_fault_context("beam");
   DcbBeamSolver solver(specimen, material, law, j_tip, parameters, progress);
   return solver.run();
 }
