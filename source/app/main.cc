@@ -2,6 +2,7 @@
 // non-zero with a one-line reason on stderr otherwise.
 #include "fiberbridge/analysis/synthetic_data.h"
 #include "fiberbridge/app/analysis_steps.h"
+#include "fiberbridge/app/reduce_step.h"
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
@@ -34,6 +35,8 @@ Usage:
                       [--j-tip J_M2] [--out DIR]   the R(delta) a law implies (Eq. 2)
   fiberbridge synth --out FILE [law options] [--replicates N] [--noise J_M2] [--seed S]
                                         synthetic replicate data from a law (labelled as such)
+  fiberbridge reduce RECORD.csv... --width MM --arm-thickness MM [--columns MAP] [--out DIR]
+                                        raw DCB records -> R(a) by direct energy, MBT, CC, MCC
   fiberbridge parameters                print every scene parameter with its documentation
   fiberbridge COMMAND --help            options of one command
 )";
@@ -239,6 +242,44 @@ int cmd_synth(const std::vector<std::string>& args) {
 
 } // namespace
 
+int cmd_reduce(const std::vector<std::string>& args) {
+  po::options_description d("fiberbridge reduce RECORD.csv... --width MM --arm-thickness MM");
+  d.add_options()("records", po::value<std::vector<std::string>>()->required(),
+                  "raw DCB records (replicates)")("width", po::value<double>(),
+                                                  "specimen width B in mm (required)")(
+      "arm-thickness", po::value<double>(), "thickness h of one arm in mm (required)")(
+      "columns", po::value<std::string>()->default_value(""),
+      "'time_s: Time (s), opening_mm: ..., load_N: ..., a_mm: ...'")(
+      "smoothing-window", po::value<double>()->default_value(0), "mm; 0 = automatic")(
+      "out", po::value<std::string>()->default_value("output/reduce"), "output directory");
+  po::positional_options_description p;
+  p.add("records", -1);
+  po::variables_map vm;
+  if (!parse(args, d, p, vm))
+    return 0;
+  const std::string out = vm["out"].as<std::string>();
+  app::ensure_directory(out);
+  app::remove_stale_summary(out);
+  app::ReduceStepOptions o;
+  o.where = "fiberbridge reduce";
+  o.files = vm["records"].as<std::vector<std::string>>();
+  o.specimen.width = vm.count("width") ? vm["width"].as<double>() * units::mm : NAN;
+  o.specimen.arm_thickness =
+      vm.count("arm-thickness") ? vm["arm-thickness"].as<double>() * units::mm : NAN;
+  o.read.columns = analysis::RecordColumnMap::parse(vm["columns"].as<std::string>(), "--columns");
+  const double w = vm["smoothing-window"].as<double>();
+  o.reduce.smoothing_window = w > 0 ? w * units::mm : NAN;
+  Json summary;
+  summary["command"] = "reduce";
+  summary["plots"] = Json::array();
+  const auto r = app::run_reduce(o, out, summary);
+  write_json_atomically(out + "/summary.json", summary);
+  std::cout << r.reduced.size() << " record(s); mean plateau R: energy " << r.mean.energy.plateau
+            << ", MBT " << r.mean.mbt.plateau << ", CC " << r.mean.cc.plateau << ", MCC "
+            << r.mean.mcc.plateau << " J/m^2; results in " << out << "\n";
+  return 0;
+}
+
 int main(int argc, char** argv) {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // Under mpirun every rank runs the command (the distributed FEM is collective); rank 0 alone
@@ -265,6 +306,8 @@ int main(int argc, char** argv) {
       return cmd_forward(args);
     if (cmd == "synth")
       return cmd_synth(args);
+    if (cmd == "reduce")
+      return cmd_reduce(args);
     if (cmd == "parameters") {
       app::print_scene_parameters(std::cout);
       return 0;

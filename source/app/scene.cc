@@ -27,6 +27,7 @@ const std::vector<SceneItem>& scene_items() {
   // Order = execution order: analysis first (fit hands its law on), then simulations, then the
   // items that compare them.
   static const std::vector<SceneItem> items = {
+      {"reduce", &declare_test_section, &run_reduce_item},
       {"extract", &declare_data_section, &run_extract_item},
       {"fit", &declare_fit_section, &run_fit_item},
       {"rank", &declare_rank_section, &run_rank_item},
@@ -48,7 +49,7 @@ const std::vector<SceneItem>& scene_items() {
 
 namespace {
 
-const char* all_item_names = "extract, fit, rank, bridging, fem, mpm, beam, compare, study";
+const char* all_item_names = "reduce, extract, fit, rank, bridging, fem, mpm, beam, compare, study";
 
 void declare_everything(dealii::ParameterHandler& prm) {
   prm.declare_entry("Output directory", "output", dealii::Patterns::Anything(),

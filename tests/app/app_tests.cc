@@ -301,3 +301,80 @@ TEST(Scenes, BeamAgreesWithFemOnLinearSoftening) {
       EXPECT_LT(d["rel_l2_developing"].get<double>(), 0.005);
   }
 }
+
+// reduce (issue 12): raw DCB records in, R(a) out; every record that cannot be used gives one
+// line naming file:line, exit 1 and no summary.json.
+namespace {
+const std::string record_map =
+    " --columns 'time_s: Time (s), opening_mm: Extension (mm), load_N: Load (N), a_mm: Crack "
+    "length (mm)'";
+std::string record(const std::string& f) {
+  return data("records/" + f);
+}
+void expect_bad_record(const std::string& file, const std::string& expect) {
+  const std::string name = "reduce_" + file.substr(0, file.find('.'));
+  expect_clean_failure(name,
+                       "reduce " + record(file) + " --width 25 --arm-thickness 2.7" + record_map +
+                           " --out out",
+                       expect);
+  EXPECT_EQ(run(name, "reduce " + record(file) + " --width 25 --arm-thickness 2.7" + record_map +
+                          " --out out")
+                .exit_code,
+            1);
+}
+} // namespace
+
+TEST(BadInput, RecordDecreasingTime) {
+  expect_bad_record("decreasing_time.csv", "decreasing_time.csv:7: time_s = 3 is earlier than 4");
+}
+TEST(BadInput, RecordCrackLengthGoingBack) {
+  expect_bad_record("crack_back.csv", "crack_back.csv:22: a_mm = 33 is 3 mm shorter");
+}
+TEST(BadInput, RecordMissingColumn) {
+  expect_bad_record("missing_column.csv", "missing_column.csv:1: missing column 'Crack length "
+                                          "(mm)' for a_mm");
+}
+TEST(BadInput, RecordNaN) {
+  expect_bad_record("nan_opening.csv", "nan_opening.csv:8: column 'Extension (mm)'");
+}
+TEST(BadInput, RecordNoCrackGrowth) {
+  expect_bad_record("no_growth.csv", "no_growth.csv:13: record 'no_growth': the crack length "
+                                     "stays at 30 mm");
+}
+TEST(BadInput, RecordWithoutWidthOrArmThickness) {
+  expect_clean_failure("reduce_no_width",
+                       "reduce " + record("good.csv") + " --arm-thickness 2.7" + record_map +
+                           " --out out",
+                       "the specimen width is missing");
+  expect_clean_failure("reduce_no_arm",
+                       "reduce " + record("good.csv") + " --width 25" + record_map + " --out out",
+                       "the arm thickness is missing");
+}
+
+TEST(AppReduce, SharedRecordsScene) {
+  // The bundled scene on the four shared records: the outputs issue 12 lists.
+  const auto r = run("reduce_scene",
+                     "run " + source("prm/test_records.prm") + " --set 'Output directory=out'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path out = work("reduce_scene") / "out";
+  for (const char* f : {"rcurve_test.csv", "rcurve_test_mean.csv", "summary.json"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  std::ifstream csv(out / "rcurve_test.csv");
+  std::string line;
+  while (std::getline(csv, line) && line[0] == '#') {
+  }
+  EXPECT_EQ(line, "record,a_mm,da_mm,R_energy_J_m2,R_energy_lo_J_m2,R_energy_hi_J_m2,R_MBT_J_m2,"
+                  "R_CC_J_m2,R_MCC_J_m2");
+  const Json s = read_json(out / "summary.json");
+  const Json& b = s.at("reduce");
+  ASSERT_EQ(b.at("records").size(), 4u);
+  for (const auto& rec : b.at("records")) {
+    EXPECT_GT(rec.at("MBT_Delta_mm").get<double>(), 0.0);
+    EXPECT_FALSE(rec.at("cleaning").empty());
+    for (const char* m : {"energy", "MBT", "CC", "MCC"})
+      EXPECT_GT(rec.at(m).at("plateau_J_m2").get<double>(),
+                rec.at(m).at("initiation_J_m2").get<double>())
+          << rec.at("name") << " " << m << ": the R curve rises (bridging)";
+  }
+  EXPECT_EQ(b.at("mean").at("n_records").get<int>(), 4);
+}

@@ -20,6 +20,8 @@ void declare_compare_section(dealii::ParameterHandler& prm);
 void run_compare_item(SceneContext& ctx);
 void declare_study_section(dealii::ParameterHandler& prm);
 void run_study_item(SceneContext& ctx);
+void declare_test_section(dealii::ParameterHandler& prm);
+void run_reduce_item(SceneContext& ctx);
 
 #ifdef FIBERBRIDGE_HAVE_BEAM
 void declare_beam_section(dealii::ParameterHandler& prm);

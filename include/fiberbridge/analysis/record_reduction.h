@@ -1,0 +1,88 @@
+#pragma once
+// R(a) from a raw DCB record (docs/design.md, "Test records"): by direct energy, with no beam or
+// process-zone assumption (seed section 2.2), and by the beam-theory reductions of ASTM D5528 /
+// ISO 15024 (MBT, CC, MCC) that the seed says are never correct with bridging, side by side.
+#include "fiberbridge/analysis/rdelta_data.h"
+#include "fiberbridge/analysis/test_record.h"
+
+#include <string>
+#include <vector>
+
+namespace fiberbridge::analysis {
+
+struct ReduceOptions {
+  /// Width in crack length of the local straight-line fits that differentiate the dissipated
+  /// energy [m]; NaN: automatic (record_reduction.cc says how).
+  double smoothing_window = NAN;
+  /// ASTM D5528 / ISO 15024 large-displacement correction F (and block correction N when the
+  /// specimen gives end blocks) on MBT, CC and MCC.
+  bool large_displacement_correction = true;
+  /// The plateau is the mean over the last this fraction of each record's crack extension.
+  double plateau_fraction = 1.0 / 3.0;
+};
+
+/// Initiation and plateau of one method's R(a).
+struct MethodSummary {
+  double initiation = NAN;  ///< at the first crack reading beyond a0 (visual onset) [J/m^2]
+  double plateau = NAN;     ///< mean over the last plateau_fraction of the extension [J/m^2]
+  double plateau_std = NAN; ///< standard deviation over those readings [J/m^2]
+};
+
+/// One record reduced: one row per crack reading beyond a0 (the rows where the reading changes).
+struct ReducedRecord {
+  std::string name, source;
+  std::vector<std::size_t> line;     ///< source line of each row
+  std::vector<double> a, da;         ///< crack length from the load line, extension a - a0 [m]
+  std::vector<double> load, opening; ///< [N], [m] at the reading
+  std::vector<double> R_energy, R_energy_lo, R_energy_hi; ///< direct energy and its band [J/m^2]
+  std::vector<double> R_MBT, R_CC, R_MCC;                 ///< [J/m^2]
+  std::vector<double> delta_root;                         ///< [m], empty when not measured
+  double a0 = NAN;                                        ///< [m]
+  double window = NAN;                                    ///< smoothing window used [m]
+  double mbt_delta = NAN;                                 ///< |Delta| of MBT [m]
+  double cc_n = NAN;               ///< CC exponent n (slope of log C against log a)
+  double mcc_A1 = NAN;             ///< MCC slope A1 of a/(2h) against C^(1/3) [N^(1/3) m^(-1/3)]
+  double max_opening_over_a = NAN; ///< largest delta/a over the readings (F matters above ~0.4)
+  MethodSummary energy, mbt, cc, mcc;
+  std::vector<std::string> cleaning; ///< the reader's cleaning sentences
+  std::vector<std::string> notes;    ///< how the reduction ran (window, fits, corrections)
+};
+
+/// Reduces one cleaned record. Direct energy: D = W - U with W the trapezoid integral of P over
+/// the opening and U = P opening / 2 (linear unloading to the origin, seed Eq. 2's assumption);
+/// R = dD/(B da) is the slope of D against a in a local least-squares line over the readings
+/// within window/2 of each reading, its band +-2 standard errors of that slope from the fit's
+/// residuals. Beam theory (ASTM D5528 / ISO 15024), C = opening/load, fits over the readings
+/// beyond a0:
+///  - MBT: G = 3 P delta F / (2 B (a + |Delta|) N), Delta from the line (C/N)^(1/3) against a;
+///  - CC:  G = n P delta F / (2 B a N), n the slope of log(C/N) against log a;
+///  - MCC: G = 3 P^2 (C/N)^(2/3) F / (2 A1 B 2h), A1 the slope of a/(2h) against (C/N)^(1/3);
+///  - F = 1 - 3/10 (delta/a)^2 - 3/2 (delta l1/a^2),
+///    N = 1 - (l2/a)^3 - 9/8 (1 - (l2/a)^2) delta l1/a^2 - 9/35 (delta/a)^2
+///    (l1, l2 from TestSpecimen; l1 = h/2 without blocks, N = 1 without blocks).
+/// Throws InputError (naming the record's file) if the geometry fails TestSpecimen::check, a0
+/// from the specimen lies beyond the first readings, or fewer than 5 readings lie beyond a0.
+ReducedRecord reduce_record(const TestRecord& record, const TestSpecimen& specimen,
+                            const ReduceOptions& options = {});
+
+/// Replicates on a common crack-extension grid: each method's mean and sample standard
+/// deviation over the records at each point.
+struct ReducedMean {
+  std::vector<double> da; ///< [0, smallest largest extension] [m]
+  std::vector<double> R_energy, R_energy_std, R_MBT, R_MBT_std, R_CC, R_CC_std, R_MCC, R_MCC_std;
+  int n_records = 0;
+  MethodSummary energy, mbt, cc, mcc; ///< of the mean curves (initiation: first grid point > 0)
+  double plateau_fraction = 1.0 / 3.0;
+};
+
+/// Linear interpolation of each record in da; n_grid points including both ends. Throws
+/// InputError for no records.
+ReducedMean average_reduced(const std::vector<ReducedRecord>& records, double plateau_fraction,
+                            int n_grid = 101);
+
+/// R(delta_root) of records that measured delta_root, as the replicates `extract`/`fit` read
+/// (R from the direct energy; delta_root held at its running maximum so it does not decrease).
+/// Throws InputError when a record has no delta_root.
+RDeltaData to_rdelta(const std::vector<ReducedRecord>& records, const std::string& source);
+
+} // namespace fiberbridge::analysis

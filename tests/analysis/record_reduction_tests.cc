@@ -1,0 +1,180 @@
+// R(a) from raw records (record_reduction.h): the shared real records against their author's
+// own G_I column, the energy method against MBT, and the averaging of replicates.
+#include "fiberbridge/analysis/line_fit.h"
+#include "fiberbridge/analysis/record_reduction.h"
+#include "fiberbridge/core/csv.h"
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <string>
+
+using namespace fiberbridge;
+using namespace fiberbridge::analysis;
+using units::mm;
+
+namespace {
+
+const char* const shared_records[] = {"DCB-01", "DCB-02", "DCB-03", "DCB-05"};
+
+std::string record_path(const std::string& name) {
+  return std::string(FIBERBRIDGE_DATA_DIR) + "/dcb_records/" + name + "_Toughness.csv";
+}
+
+RecordReadOptions shared_columns() {
+  RecordReadOptions o;
+  o.columns = RecordColumnMap::parse(
+      "time_s: Time, opening_mm: Disp, load_N: Force, a_mm: CrackExt", "test");
+  return o;
+}
+
+/// The geometry data/dcb_records/README.md states: width 25 mm, arms 2.7 mm.
+TestSpecimen shared_specimen() {
+  TestSpecimen s;
+  s.width = 25 * mm;
+  s.arm_thickness = 2.7 * mm;
+  s.length = 123 * mm;
+  return s;
+}
+
+/// The author's G_I (kJ/m^2 in the file) at each source line, in J/m^2.
+std::map<std::size_t, double> author_G(const std::string& path) {
+  const CsvTable t = CsvTable::read(path);
+  const auto G = t.numeric("G_I");
+  std::map<std::size_t, double> by_line;
+  for (std::size_t r = 0; r < t.n_rows(); ++r)
+    by_line[t.line_of_row(r)] = G[r] * 1e3;
+  return by_line;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+} // namespace
+
+// The author's G_I column is MBT without the large-displacement correction: the Delta it
+// implies, 3 P delta / (2 B G_I) - a, is constant along each record to +-0.4 mm (5-95 %), and
+// our MBT without F reproduces G_I at every crack reading to within a few per cent, while with F
+// it falls 2-3 % lower (F = 0.97 at the openings of a third of the crack length reached here).
+// Measured medians of R_MBT(no F)/G_I over the readings with G_I > 100 J/m^2: DCB-01 0.989,
+// DCB-02 0.984, DCB-03 0.977, DCB-05 0.977 (docs/verification.md, "Test records"). The residual
+// is the author's |Delta|, 0.9-1.7 mm shorter than ours (fitted, we think, over every row rather
+// than the rows with a fresh crack reading; the script is not published), which at a = 35-105 mm
+// is 1-2.5 %; the tolerance of 3 % on the median and 5 % on the 5-95 % range covers that and no
+// more.
+TEST(RecordReduction, MbtReproducesTheAuthorsGI) {
+  for (const char* name : shared_records) {
+    const auto rec = read_test_records(record_path(name), shared_columns()).at(0);
+    const auto G = author_G(record_path(name));
+    double median_with_F = 0;
+    for (bool F : {true, false}) {
+      ReduceOptions o;
+      o.large_displacement_correction = F;
+      const auto r = reduce_record(rec, shared_specimen(), o);
+      std::vector<double> ratio;
+      for (std::size_t i = 0; i < r.a.size(); ++i) {
+        const double g = G.at(r.line[i]);
+        if (g > 100) // below 100 J/m^2 the ratio of two small numbers is noise (first readings)
+          ratio.push_back(r.R_MBT[i] / g);
+      }
+      ASSERT_GT(ratio.size(), 100u) << name;
+      std::sort(ratio.begin(), ratio.end());
+      const double med = ratio[ratio.size() / 2];
+      const double p5 = ratio[ratio.size() / 20], p95 = ratio[19 * ratio.size() / 20];
+      std::printf("%s MBT %s F / author's G_I: median %.4f, 5-95 %% %.4f-%.4f, |Delta| %.2f mm\n",
+                  name, F ? "with" : "without", med, p5, p95, r.mbt_delta / mm);
+      if (F) {
+        median_with_F = med;
+        continue;
+      }
+      EXPECT_NEAR(med, 1.0, 0.03) << name;
+      EXPECT_GT(p5, 0.95) << name;
+      EXPECT_LT(p95, 1.05) << name;
+      EXPECT_LT(median_with_F, med - 0.01) << name << ": F should lower MBT by > 1 % here";
+    }
+  }
+}
+
+// The direct energy needs no beam theory; where the arms are still nearly linear (opening below
+// a fifth of the crack length) and the window is two-sided, it should agree with MBT. Measured
+// medians of R_energy/R_MBT there with the automatic 10.8 mm window: DCB-01 0.959, DCB-02 0.961,
+// DCB-05 0.951; the energy slope's own band is +-5-10 % (2 s.e.) at these readings, so the 10 %
+// tolerance is that band, not more. DCB-03 does not agree: 0.79. Over da = 5-12 mm its energy R
+// stays at 490-530 J/m^2 while MBT rises from 560 to 710, then the energy R catches up: the crack
+// readings run ahead of the energy dissipated there (a tracked tip ahead of the compliance crack),
+// which the energy method divides by and MBT, which takes its crack from the compliance fit, does
+// not. That is a finding about the record, kept visible here rather than tolerated away
+// (docs/verification.md, "Test records").
+TEST(RecordReduction, EnergyAgreesWithMbtWhereArmsAreLinear) {
+  for (const char* name : shared_records) {
+    const auto rec = read_test_records(record_path(name), shared_columns()).at(0);
+    const auto r = reduce_record(rec, shared_specimen());
+    EXPECT_NEAR(r.window, 4 * 2.7 * mm, 1e-12) << "automatic window: 4 arm thicknesses here";
+    std::vector<double> ratio;
+    for (std::size_t i = 0; i < r.a.size(); ++i)
+      if (r.opening[i] / r.a[i] < 0.2 && r.da[i] >= r.window / 2)
+        ratio.push_back(r.R_energy[i] / r.R_MBT[i]);
+    ASSERT_GT(ratio.size(), 10u) << name;
+    const double med = median(ratio);
+    std::printf("%s: R_energy/R_MBT where opening/a < 0.2: median %.3f over %zu readings\n", name,
+                med, ratio.size());
+    if (std::string(name) == "DCB-03")
+      EXPECT_LT(med, 0.9) << "DCB-03 now agrees: update docs/verification.md";
+    else
+      EXPECT_NEAR(med, 1.0, 0.10) << name;
+    // The band brackets the estimate and is finite wherever the window holds 3 readings.
+    for (std::size_t i = 0; i < r.a.size(); ++i) {
+      ASSERT_TRUE(std::isfinite(r.R_energy[i])) << name << " line " << r.line[i];
+      EXPECT_LE(r.R_energy_lo[i], r.R_energy[i]);
+      EXPECT_GE(r.R_energy_hi[i], r.R_energy[i]);
+    }
+  }
+}
+
+TEST(RecordReduction, ReplicatesOnACommonExtensionGrid) {
+  std::vector<ReducedRecord> reduced;
+  double shortest = INFINITY;
+  for (const char* name : shared_records) {
+    reduced.push_back(reduce_record(read_test_records(record_path(name), shared_columns()).at(0),
+                                    shared_specimen()));
+    shortest = std::min(shortest, reduced.back().da.back());
+  }
+  const auto m = average_reduced(reduced, 1.0 / 3.0, 51);
+  EXPECT_EQ(m.n_records, 4);
+  ASSERT_EQ(m.da.size(), 51u);
+  EXPECT_DOUBLE_EQ(m.da.back(), shortest);
+  // The mean of the four at the grid's end is their interpolated mean, and they do scatter.
+  double sum = 0;
+  for (const auto& r : reduced) {
+    std::vector<double> at = {shortest};
+    sum += resample_linear(r.da, r.R_MBT, at)[0];
+  }
+  EXPECT_NEAR(m.R_MBT.back(), sum / 4, 1e-9 * sum);
+  EXPECT_GT(m.R_MBT_std[25], 0.0);
+  EXPECT_GT(m.mbt.plateau, m.mbt.initiation);
+}
+
+TEST(RecordReduction, GeometryAndInitialCrackErrors) {
+  const auto rec = read_test_records(record_path("DCB-01"), shared_columns()).at(0);
+  TestSpecimen s = shared_specimen();
+  s.width = NAN;
+  EXPECT_THROW(reduce_record(rec, s), InputError);
+  s = shared_specimen();
+  s.initial_crack = 40 * mm; // the first reading is 37.64 mm
+  try {
+    reduce_record(rec, s);
+    FAIL() << "a0 beyond the first reading accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("beyond the first crack reading 37.64 mm"),
+              std::string::npos)
+        << e.what();
+  }
+}
