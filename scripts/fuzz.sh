@@ -11,7 +11,8 @@ build="$(cd "${1:-build-fuzz}" && pwd)"
 seconds="${2:-60}"
 shift $(($# < 2 ? $# : 2))
 targets=("$@")
-[[ ${#targets[@]} -gt 0 ]] || targets=(csv_reader rdelta_reader law_points law_table table1_reader scene_reader)
+[[ ${#targets[@]} -gt 0 ]] || targets=(csv_reader rdelta_reader law_points law_table table1_reader test_record_reader
+  scene_reader)
 findings="$build/fuzz/findings"
 mkdir -p "$findings"
 
@@ -28,6 +29,12 @@ for target in "${targets[@]}"; do
   rm -rf "$build/fuzz/work/$target"
   case $target in
     scene_reader) seed "$target" "${scenes[@]}" ;;
+    test_record_reader) # the shared records, each also with the column map of prm/test_records.prm
+      seed "$target" "${csvs[@]}" "$root"/data/dcb_records/*.csv
+      map=$(grep -h "set Columns" "$root"/prm/test_records.prm | sed 's/.*Columns *= *//')
+      for f in "$root"/data/dcb_records/*.csv; do
+        { echo "#columns: $map"; cat "$f"; } >"$build/fuzz/work/$target/corpus/mapped_$(basename "$f")"
+      done ;;
     law_points) # the law points of every bundled scene, one value per corpus file
       mkdir -p "$build/fuzz/work/$target/corpus"
       i=0
