@@ -27,7 +27,7 @@ void ensure_directory(const std::string& dir) {
 }
 
 void remove_stale_summary(const std::string& out_dir) {
-  // Marker first: from here until mark_run_complete() the directory says it is incomplete, so a
+  // Marker first: from here until write_run_summary() the directory says it is incomplete, so a
   // run killed at any moment leaves either this marker or a finished run's summary.json.
   write_file_atomically(
       out_dir + "/" + incomplete_marker,
@@ -44,7 +44,8 @@ void remove_stale_summary(const std::string& out_dir) {
   }
 }
 
-void mark_run_complete(const std::string& out_dir) {
+void write_run_summary(const std::string& out_dir, const Json& summary) {
+  write_json_atomically(out_dir + "/summary.json", summary);
   if (!output_enabled()) // an MPI rank other than 0 (core/output_guard.h)
     return;
   std::error_code ec;

@@ -222,8 +222,7 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
   write_file_atomically(ctx.out("parameters_used.prm"), used.str());
   const std::string report = text_report(ctx.summary);
   write_file_atomically(ctx.out("report.txt"), report);
-  write_json_atomically(ctx.out("summary.json"), ctx.summary);
-  mark_run_complete(ctx.output_dir);
+  write_run_summary(ctx.output_dir, ctx.summary);
   if (writer)
     std::cout << report;
   return ctx.output_dir;

@@ -6,7 +6,14 @@
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
 
+#include "fiberbridge/law/numerical_fault.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <iostream>
 #include <limits>
+#include <string>
 
 namespace fiberbridge::test {
 
@@ -30,5 +37,20 @@ private:
   law::PiecewiseLinearLaw base_ = law::make_linear_softening(1000 * units::kPa, 0.4 * units::mm)
                                       .with_elastic_rise(0.04 * units::mm);
 };
+
+/// Runs a simulation of `model` on the NaN law: it must end in law::NumericalFault naming the
+/// model, the step, the law's traction and the NaN.
+inline void expect_nan_diagnosis(const std::string& model, const std::function<void()>& run) {
+  try {
+    run();
+    ADD_FAILURE() << model << " ran through a NaN traction";
+  } catch (const law::NumericalFault& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(model + ", step "), std::string::npos) << what;
+    EXPECT_NE(what.find("traction of the nan-past-opening law"), std::string::npos) << what;
+    EXPECT_NE(what.find("is nan"), std::string::npos) << what;
+    std::cout << "diagnosis: " << what << "\n";
+  }
+}
 
 } // namespace fiberbridge::test
