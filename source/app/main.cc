@@ -143,7 +143,7 @@ int cmd_extract(const std::vector<std::string>& args) {
   f.free_breakpoints = vm["free-breakpoints"].as<bool>();
   const auto fit = app::run_trilinear_fit(e, f, out, summary);
   app::plot_extraction(e, &fit, out, summary);
-  write_json_atomically(out + "/summary.json", summary);
+  app::write_run_summary(out, summary);
   std::cout << "J_tip " << e.steady.j_tip << " J/m^2, G_ss " << e.steady.G_ss << " J/m^2, delta_c "
             << e.steady.delta_c / units::mm << " mm; trilinear sigma1 " << fit.law.s1 / units::kPa
             << " kPa, sigma2 " << fit.law.s2 / units::kPa << " kPa; results in " << out << "\n";
@@ -168,7 +168,7 @@ int cmd_rank(const std::vector<std::string>& args) {
   app::RankOptions o;
   o.table_file = vm["table"].as<std::string>();
   app::run_ranking(o, out, summary);
-  write_json_atomically(out + "/summary.json", summary);
+  app::write_run_summary(out, summary);
   std::cout << "ranking (most durable first):";
   for (const auto& m : summary["ranking"])
     std::cout << " " << m.get<std::string>();
@@ -271,7 +271,7 @@ int cmd_reduce(const std::vector<std::string>& args) {
   summary["command"] = "reduce";
   summary["plots"] = Json::array();
   const auto r = app::run_reduce(o, out, summary);
-  write_json_atomically(out + "/summary.json", summary);
+  app::write_run_summary(out, summary);
   std::cout << r.reduced.size() << " record(s); mean plateau R: energy " << r.mean.energy.plateau
             << ", MBT " << r.mean.mbt.plateau << ", CC " << r.mean.cc.plateau << ", MCC "
             << r.mean.mcc.plateau << " J/m^2; results in " << out << "\n";

@@ -157,9 +157,8 @@ void print_scene_parameters(std::ostream& out) {
   prm.print_parameters(out, dealii::ParameterHandler::PRM);
 }
 
-std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides) {
-  const auto t0 = std::chrono::steady_clock::now();
-  dealii::ParameterHandler prm;
+std::vector<std::string> read_scene(dealii::ParameterHandler& prm, const std::string& prm_file,
+                                    const std::vector<std::string>& overrides) {
   declare_everything(prm);
   if (!std::filesystem::exists(prm_file))
     throw InputError(prm_file + ": scene file not found");
@@ -177,7 +176,6 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
   if (wanted.empty())
     throw InputError(prm_file + ": 'Run' lists no items; choose from " +
                      std::string(all_item_names));
-  std::set<std::string> wanted_set(wanted.begin(), wanted.end());
   for (const auto& w : wanted) {
     bool known = false;
     for (const auto& item : scene_items())
@@ -190,6 +188,14 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
       throw InputError(prm_file + ": unknown Run item '" + w + "', expected one of " + all);
     }
   }
+  return wanted;
+}
+
+std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides) {
+  const auto t0 = std::chrono::steady_clock::now();
+  dealii::ParameterHandler prm;
+  const auto wanted = read_scene(prm, prm_file, overrides);
+  std::set<std::string> wanted_set(wanted.begin(), wanted.end());
 
   SceneContext ctx;
   ctx.prm = &prm;
@@ -217,13 +223,12 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
   }
   ctx.summary["wall_time_s"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (writer) {
-    std::ofstream used(ctx.out("parameters_used.prm"));
-    prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
-  }
+  std::ostringstream used;
+  prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
+  write_file_atomically(ctx.out("parameters_used.prm"), used.str());
   const std::string report = text_report(ctx.summary);
   write_file_atomically(ctx.out("report.txt"), report);
-  write_json_atomically(ctx.out("summary.json"), ctx.summary);
+  write_run_summary(ctx.output_dir, ctx.summary);
   if (writer)
     std::cout << report;
   return ctx.output_dir;

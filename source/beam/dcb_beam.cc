@@ -5,6 +5,7 @@
 #include "fiberbridge/beam/elastica.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
+#include "fiberbridge/law/numerical_fault.h"
 
 #include <algorithm>
 #include <array>
@@ -625,6 +626,7 @@ SimulationResult DcbBeamSolver::run() {
     }
     p.external_work = work;
     dissipation.push_back(work - p.strain_energy - p.zone_recoverable);
+    law::check_rcurve_point(p); // NaN/Inf ends the run naming the column
     result.rcurve.push_back(p);
     // Small rotations: measure the load error against the elastica at the state of largest
     // opening per crack length (under a tenth the error is about 0.15 % or less,
@@ -820,6 +822,7 @@ law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Mat
                                    const law::TractionLaw& law, double j_tip,
                                    const BeamParameters& parameters,
                                    const std::function<void(const std::string&)>& progress) {
+  law::begin_fault_context("beam");
   DcbBeamSolver solver(specimen, material, law, j_tip, parameters, progress);
   return solver.run();
 }

@@ -35,6 +35,7 @@
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/fem/cohesive_interface.h"
 #include "fiberbridge/fem/dcb_common.h"
+#include "fiberbridge/law/numerical_fault.h"
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/index_set.h>
@@ -1261,6 +1262,7 @@ law::SimulationResult DcbModel::run() {
     }
     load_to_critical();
     const law::RCurvePoint pt = record_advance();
+    law::check_rcurve_point(pt); // NaN/Inf ends the run naming the column
     result_.rcurve.push_back(pt);
     if (first_root_move < 0 && pt.root > a0 + 1e-9 * L)
       first_root_move = pt.a;
@@ -1348,6 +1350,7 @@ law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Mat
                                    const FemParameters& parameters, const std::string& output_dir,
                                    const std::function<void(const std::string&)>& progress,
                                    FemRunDetails& details) {
+  law::begin_fault_context("fem");
   DcbModel model(specimen, material, law, j_tip, parameters, output_dir, progress);
   auto result = model.run();
   details = model.details();

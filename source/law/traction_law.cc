@@ -1,8 +1,13 @@
 #include "fiberbridge/law/traction_law.h"
 
+#include "fiberbridge/core/units.h"
+#include "fiberbridge/law/numerical_fault.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
 
 namespace fiberbridge::law {
 
@@ -35,11 +40,12 @@ double TractionLaw::initial_stiffness() const {
   return envelope(d1) / d1;
 }
 
-CohesiveResponse TractionLaw::respond(double opening, double delta_max,
-                                      double contact_stiffness) const {
+namespace {
+CohesiveResponse respond_unchecked(const TractionLaw& law, double opening, double delta_max,
+                                   double contact_stiffness) {
   CohesiveResponse r;
   r.delta_max = delta_max;
-  const double dc = critical_opening();
+  const double dc = law.critical_opening();
   if (opening < 0) {
     // Closing below zero opening is contact: a penalty, elastic, no damage and no dissipation.
     r.traction = contact_stiffness * opening;
@@ -53,8 +59,8 @@ CohesiveResponse TractionLaw::respond(double opening, double delta_max,
       r.failed = true;
       return r;
     }
-    r.traction = envelope(opening);
-    r.tangent = envelope_slope(opening);
+    r.traction = law.envelope(opening);
+    r.tangent = law.envelope_slope(opening);
     return r;
   }
   // Unloading/reloading below the history maximum: secant to the origin (elastic damage).
@@ -62,9 +68,28 @@ CohesiveResponse TractionLaw::respond(double opening, double delta_max,
     r.failed = true;
     return r;
   }
-  const double secant = envelope(delta_max) / delta_max;
+  const double secant = law.envelope(delta_max) / delta_max;
   r.traction = secant * opening;
   r.tangent = secant;
+  return r;
+}
+} // namespace
+
+CohesiveResponse TractionLaw::respond(double opening, double delta_max,
+                                      double contact_stiffness) const {
+  // The law boundary of the numerical-fault checks (law/numerical_fault.h): a NaN opening would
+  // fall through every comparison below into the secant branch and come back as a NaN traction.
+  if (!std::isfinite(opening) || !std::isfinite(delta_max))
+    check_finite(!std::isfinite(opening) ? opening : delta_max,
+                 std::string(!std::isfinite(opening) ? "opening" : "history opening delta_max") +
+                     " at a cohesive point of the " + name() + " law");
+  const CohesiveResponse r = respond_unchecked(*this, opening, delta_max, contact_stiffness);
+  if (!std::isfinite(r.traction) || !std::isfinite(r.tangent)) {
+    std::ostringstream q;
+    q << (!std::isfinite(r.traction) ? "traction" : "tangent") << " of the " << name()
+      << " law at opening " << opening / units::mm << " mm";
+    check_finite(!std::isfinite(r.traction) ? r.traction : r.tangent, q.str());
+  }
   return r;
 }
 

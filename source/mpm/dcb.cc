@@ -2,6 +2,7 @@
 
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
+#include "fiberbridge/law/numerical_fault.h"
 #include "fiberbridge/mpm/crack.h"
 #include "fiberbridge/mpm/explicit_solver.h"
 #include "fiberbridge/mpm/j_integral.h"
@@ -248,6 +249,7 @@ void DcbModel::advance_tip(double j_measured) {
   // the unbalanced stress of the cut acts on light node fields at the newly split column) and
   // the PIC damping. Both count as dissipated, beside the zone's share of the law.
   pt.dissipated = crack.zone_dissipated(B) + s.damping_loss() + s.numerical_loss();
+  law::check_rcurve_point(pt); // NaN/Inf ends the run naming the column
   rcurve_.push_back(pt);
   if (pt.strain_energy > 0)
     max_kinetic_ratio_ = std::max(max_kinetic_ratio_, pt.kinetic_energy / pt.strain_energy);
@@ -510,6 +512,7 @@ law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Mat
                                    const law::TractionLaw& law, double j_tip,
                                    const MpmParameters& params, const std::string& output_dir,
                                    const std::function<void(const std::string&)>& progress) {
+  law::begin_fault_context("mpm");
   DcbModel model(specimen, material, law, j_tip, params, output_dir, progress);
   return model.run();
 }

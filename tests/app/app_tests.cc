@@ -127,6 +127,8 @@ TEST(Commands, ExtractOnBundledSampleGivesTheDesignOutputs) {
   for (const char* f : {"cohesive_law_eq5.csv", "cohesive_law_dRdd.csv", "trilinear_fit.csv",
                         "rdelta_averaged.csv", "summary.json"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
+  // A finished run removes the marker a killed one leaves (issue 15, output_kill_tests.cc).
+  EXPECT_FALSE(fs::exists(out / "RUN_INCOMPLETE.txt"));
   const auto j = read_json(out / "summary.json");
   for (const char* k : {"J_tip_J_m2", "G_ss_J_m2", "delta_c_mm", "peak_sigma_eq5_kPa",
                         "peak_sigma_dRdd_kPa", "trilinear"})
@@ -147,6 +149,7 @@ TEST(Commands, RankReproducesThePapersOrder) {
   const auto r =
       run("rank_seed", "rank " + source("data/reference/seed_table1.csv") + " --out out");
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(work("rank_seed") / "out" / "RUN_INCOMPLETE.txt"));
   const auto j = read_json(work("rank_seed") / "out" / "summary.json");
   std::vector<std::string> adhesives;
   for (const auto& m : j["ranking"])
@@ -382,6 +385,7 @@ TEST(AppReduce, SharedRecordsScene) {
   const fs::path out = work("reduce_scene") / "out";
   for (const char* f : {"rcurve_test.csv", "rcurve_test_mean.csv", "summary.json"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
+  EXPECT_FALSE(fs::exists(out / "RUN_INCOMPLETE.txt"));
   std::ifstream csv(out / "rcurve_test.csv");
   std::string line;
   while (std::getline(csv, line) && line[0] == '#') {

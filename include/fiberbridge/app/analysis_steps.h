@@ -57,8 +57,14 @@ struct RankOptions {
 /// PNGs per material; adds `ranking`, `degradation`, `consistency` to summary.
 void run_ranking(const RankOptions& o, const std::string& out_dir, Json& summary);
 
-/// Removes a stale summary.json so that a failed run never leaves an old one looking current.
+/// Name of the file that marks an output directory as holding no complete run.
+inline constexpr const char* incomplete_marker = "RUN_INCOMPLETE.txt";
+/// At the start of a run: writes the incomplete marker, then removes a stale summary.json (so a
+/// failed or killed run never leaves an old one looking current) and leftover *.partial files.
 void remove_stale_summary(const std::string& out_dir);
+/// The end of a successful run: writes summary.json (atomically), then removes the incomplete
+/// marker. Every command that writes a summary ends through here.
+void write_run_summary(const std::string& out_dir, const Json& summary);
 /// Creates the directory (and parents); InputError when impossible.
 void ensure_directory(const std::string& dir);
 

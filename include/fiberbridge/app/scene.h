@@ -6,7 +6,16 @@
 #include <string>
 #include <vector>
 
+namespace dealii {
+class ParameterHandler;
+}
+
 namespace fiberbridge::app {
+
+/// Declares every section in `prm`, parses `prm_file` (unknown entries are errors), applies the
+/// --set overrides and checks the Run list; returns the items to run. Throws InputError.
+std::vector<std::string> read_scene(dealii::ParameterHandler& prm, const std::string& prm_file,
+                                    const std::vector<std::string>& overrides);
 
 /// Runs the scene; returns the output directory. Throws InputError/ComputationError.
 std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides);
