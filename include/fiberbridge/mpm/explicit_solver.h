@@ -108,6 +108,15 @@ private:
     const int side = split_column_[i] ? own_side_[p] : row_side_[j];
     return 2 * (i * grid_.ny() + j) + side;
   }
+  /// Calls f(field index, S, dS/dx, dS/dy) for the 3 x 3 links of particle p, a (x) outer.
+  template <class F>
+  void for_links(long p, F&& f) const {
+    const double *sx = &sx_[3 * p], *sy = &sy_[3 * p];
+    const double *dsx = &dsx_[3 * p], *dsy = &dsy_[3 * p];
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        f(field_index(p, a, b), sx[a] * sy[b], dsx[a] * sy[b], sx[a] * dsy[b]);
+  }
   /// Runs body(begin, end) over the particles in chunks, on the team's threads.
   template <class Body>
   void for_particles(Body&& body);
