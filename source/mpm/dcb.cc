@@ -27,10 +27,6 @@ namespace {
 
 using units::mm;
 
-/// A window-mean tip J above this multiple of J_tip at an advance: the tip lagged the loading
-/// (the mean overshoots by the J rise within one check interval, well below 1 %, otherwise).
-constexpr double lag_tolerance = 1.02;
-
 std::string fmt(double v, int precision = 4) {
   std::ostringstream s;
   s.precision(precision);
@@ -166,34 +162,13 @@ void DcbModel::setup_loading() {
                    " steps per period)");
   if (!out_dir_.empty() && prm_.vtu_every_advances > 0)
     vtu_ = std::make_unique<ParticleVtuWriter>(out_dir_, "mpm_particles");
+  growth_ = std::make_unique<GrowthCriterion>(spec_, mat_, j_tip_, prm_.j_window_periods, step_,
+                                              n_check_ * solver_->dt());
   set_growth_window();
 }
 
 void DcbModel::set_growth_window() {
-  // What rings after an advance is the arm at its current length: average over a fixed fraction
-  // of that period. (A window fixed at the a0 period averaged less and less of the ringing as
-  // the crack grew: near the end of the linear-softening verification run the tip advanced
-  // twice within one period and J_ff at the second advance read 15 % low.)
-  const double a = crack_->tip();
-  double window = prm_.j_window_periods * arm_vibration_period(spec_, mat_, a);
-  // The tip advances at most once per window, so the window must stay shorter than the time the
-  // loading needs to drive the tip one step quasi-statically, or the tip falls behind and J
-  // overshoots J_tip. That time, from corrected beam theory at constant G (opening ~ (a + chi h)^2
-  // in LEFM; a rising R curve needs more): opening * (Delta(a + da)/Delta(a) - 1) / rate. The
-  // window takes at most 0.7 of it (0.5 rode the ringing's peaks: -4.9 % on G_ss in the linear-
-  // softening run at 8 loading periods; uncapped, the tip lagged at the end of the PVA run).
-  auto lefm_opening = [&](double x) {
-    return law::cbt_opening(spec_, mat_, law::cbt_load_at_crack_length(spec_, mat_, 1.0, x), x);
-  };
-  const double step_time =
-      std::max(opening_, opening0_) * (lefm_opening(a + step_) / lefm_opening(a) - 1) / rate_;
-  if (window > 0.7 * step_time) {
-    window = 0.7 * step_time;
-    if (!rcurve_.empty())
-      ++shortened_windows_;
-  }
-  j_window_length_ =
-      static_cast<std::size_t>(std::max(1.0, std::round(window / (n_check_ * solver_->dt()))));
+  growth_->set_window(crack_->tip(), std::max(opening_, opening0_), rate_, !rcurve_.empty());
 }
 
 double DcbModel::opening_rate(double t) const {
@@ -299,22 +274,9 @@ bool DcbModel::step(bool grow) {
   if (!std::isfinite(J_now))
     throw ComputationError("MPM: the tip J integral is not finite at t = " + fmt(s.time()) +
                            " s; the run became unstable");
-  // Growth criterion on the tip J averaged over a sliding window (a fraction of the arm period)
-  // that restarts at every advance: the waves an advance releases and the arm's ringing then
-  // cannot push the tip on their peaks, which made the far-field J fall 20-30 % below J_tip on
-  // average. The window bounds the tip speed at one step per window.
-  j_window_.push_back(J_now);
-  if (j_window_.size() > j_window_length_)
-    j_window_.pop_front();
-  if (j_window_.size() < j_window_length_)
-    return true;
   double J = 0;
-  for (double v : j_window_)
-    J += v;
-  J /= j_window_.size();
-  if (J < j_tip_)
+  if (!growth_->advance_due(J_now, J))
     return true;
-  j_window_.clear();
   if (crack_->tip() + step_ > end_tip_) {
     stop_reason_ =
         "the tip reached the end ligament (" + fmt((spec_.length - end_tip_) / mm) + " mm)";
@@ -374,9 +336,19 @@ law::SimulationResult DcbModel::run() {
                     " steps, " + fmt(s.time() * 1e3) + " ms");
   finish(r);
   r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  r.notes.push_back("performance: " +
-                    fmt(static_cast<double>(s.particles().size()) * s.steps() / r.wall_time_s, 3) +
-                    " particle-steps per second");
+  const double* ph = s.phase_seconds();
+  const double other = r.wall_time_s - ph[0] - ph[1] - ph[2];
+  auto pct = [&](double t) { return fmt(100 * t / r.wall_time_s, 3) + " %"; };
+  r.notes.push_back(
+      "performance: " +
+      fmt(static_cast<double>(s.particles().size()) * s.steps() / r.wall_time_s, 3) +
+      " particle-steps per second; " + std::to_string(s.steps()) + " steps, " +
+      std::to_string(s.parallel_steps()) +
+      " of them with the helper threads (MPM/Threads; the faster way, timed every 1000 "
+      "steps); wall time: scatter to the grid " +
+      pct(ph[0]) + ", grid update, crack and contact " + pct(ph[1]) +
+      ", grid to particles with stress and next weights " + pct(ph[2]) +
+      ", growth checks (J integrals) and the rest " + pct(other));
   return r;
 }
 
@@ -414,16 +386,16 @@ void DcbModel::finish(law::SimulationResult& r) const {
                      "after each row (the per-advance increments ring with the arm)");
   const auto lagging_advances =
       std::count_if(rcurve_.begin(), rcurve_.end(),
-                    [&](const law::RCurvePoint& p) { return p.J_tip > lag_tolerance * j_tip_; });
-  if (shortened_windows_ > 0 || lagging_advances > 0)
+                    [&](const law::RCurvePoint& p) { return growth_->lagged(p.J_tip); });
+  if (growth_->shortened_windows() > 0 || lagging_advances > 0)
     r.notes.push_back(
-        "growth not fully quasi-static: at " + std::to_string(shortened_windows_) + " of " +
-        std::to_string(rcurve_.size()) + " advances the loading rate cut the J window below " +
-        fmt(prm_.j_window_periods) +
+        "growth not fully quasi-static: at " + std::to_string(growth_->shortened_windows()) +
+        " of " + std::to_string(rcurve_.size()) +
+        " advances the loading rate cut the J window below " + fmt(prm_.j_window_periods) +
         " arm periods (the ringing an advance excites is then only "
         "partly averaged and R_J scatters), and at " +
         std::to_string(lagging_advances) + " the tip lagged the loading (window-mean J above " +
-        fmt(lag_tolerance) +
+        fmt(GrowthCriterion::lag_tolerance) +
         " J_tip); raise MPM/Loading periods "
         "(the linear-softening verification run moved from -1.7 % at 8 to -2.3 % at 32 periods, "
         "where the result no longer depends on the window)");
@@ -489,7 +461,7 @@ void DcbModel::finish(law::SimulationResult& r) const {
   for (const auto& p : rc) {
     if (!((!bridging || p.root > a0_ + 0.25 * cell_) && std::isfinite(p.R_J)))
       continue;
-    if (p.J_tip > lag_tolerance * j_tip_) {
+    if (growth_->lagged(p.J_tip)) {
       ++lagging;
       continue;
     }
@@ -499,7 +471,8 @@ void DcbModel::finish(law::SimulationResult& r) const {
   if (lagging > 0)
     r.notes.push_back("G_ss leaves out " + std::to_string(lagging) +
                       " steady-state advance(s) where the tip lagged the loading (J_tip above " +
-                      fmt(lag_tolerance) + " x the set value; see the J_tip column)");
+                      fmt(GrowthCriterion::lag_tolerance) +
+                      " x the set value; see the J_tip column)");
   r.reached_steady_state = count > 0;
   r.G_ss = count > 0 ? sum / count : law::not_available;
   if (count == 0)

@@ -7,11 +7,11 @@
 #include "fiberbridge/law/traction_law.h"
 #include "fiberbridge/mpm/crack.h"
 #include "fiberbridge/mpm/explicit_solver.h"
+#include "fiberbridge/mpm/growth_criterion.h"
 #include "fiberbridge/mpm/orthotropic_elastic.h"
 #include "fiberbridge/mpm/parameters.h"
 #include "fiberbridge/mpm/vtu_writer.h"
 
-#include <deque>
 #include <functional>
 #include <memory>
 #include <string>
@@ -75,11 +75,9 @@ private:
   double cell_ = 0, step_ = 0, opening_allowance_ = 0, end_tip_ = 0;
   double a0_ = 0; ///< initial tip: the node column nearest to the sawn crack's end [m]
   double rate_ = 0, ramp_time_ = 0, t_vib0_ = 0;
-  double opening0_ = 0;             ///< LEFM initiation opening of the load line (beam theory) [m]
-  int n_check_ = 1;                 ///< steps between tip J evaluations
-  std::size_t j_window_length_ = 1; ///< evaluations averaged by the growth criterion
-  std::deque<double> j_window_;
-  int shortened_windows_ = 0; ///< advances whose window the loading rate cut short
+  double opening0_ = 0; ///< LEFM initiation opening of the load line (beam theory) [m]
+  int n_check_ = 1;     ///< steps between tip J evaluations
+  std::unique_ptr<GrowthCriterion> growth_; ///< when the tip advances
   std::vector<std::string> notes_;
   std::string stop_reason_;
 

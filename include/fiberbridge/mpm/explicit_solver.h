@@ -8,7 +8,9 @@
 #include "fiberbridge/mpm/grid.h"
 #include "fiberbridge/mpm/orthotropic_elastic.h"
 #include "fiberbridge/mpm/particles.h"
+#include "fiberbridge/mpm/work_team.h"
 
+#include <memory>
 #include <vector>
 
 namespace fiberbridge::mpm {
@@ -33,14 +35,15 @@ public:
   /// `thickness` is the out-of-plane width B: forces are for the whole width.
   ExplicitSolver(Grid grid, Particles particles, const OrthotropicElastic& material, double dt,
                  double pic_fraction, double thickness);
+  ~ExplicitSolver();
 
   /// Optional explicit crack (not owned; must outlive the solver's steps).
   void set_crack(Crack* crack) { crack_ = crack; }
   std::vector<VelocityConstraint>& constraints() { return constraints_; }
   std::vector<ParticleForce>& particle_forces() { return particle_forces_; }
-  /// Threads of the particle loops (OpenMP builds; 1 = serial). Results do not depend on it
-  /// beyond the summation order of the PIC damping loss.
-  void set_threads(int n) { threads_ = n > 1 ? n : 1; }
+  /// Threads of the particle loops (1 = serial). More threads change only the order of sums:
+  /// the scatter runs in coloured blocks and the energy terms are summed per chunk.
+  void set_threads(int n);
   /// Changes the PIC damping fraction (tests switch damping off to watch free vibration).
   void set_pic_fraction(double beta) { beta_ = beta; }
 
@@ -51,6 +54,13 @@ public:
   double time() const { return time_; }
   double dt() const { return dt_; }
   long steps() const { return steps_; }
+  /// Steps run with the helper threads (with Threads > 1 the solver times both ways now and
+  /// then and keeps the faster: on cores busy with other work one thread wins).
+  long parallel_steps() const { return parallel_steps_; }
+  /// Wall time spent so far [s] in: 0 the weights' use in the scatter to the grid (with the grid
+  /// reset), 1 the grid update with crack tractions, contact, constraints and crack surfaces,
+  /// 2 grid to particles with the stress update and the next step's weights.
+  const double* phase_seconds() const { return phase_seconds_; }
   const Particles& particles() const { return particles_; }
   const Grid& grid() const { return grid_; }
   const OrthotropicElastic& material() const { return material_; }
@@ -76,21 +86,41 @@ public:
   void material_displacement(double x, double y, double& ux, double& uy) const;
 
 private:
-  struct Link { // one particle-node pair of the current step
-    int node;
-    int side;
-    double S, gx, gy;
-  };
   void particles_to_grid();
+  /// uGIMP weights of particles [begin, end) at their current positions; returns a particle whose
+  /// nodes leave the grid, or -1.
+  long compute_weights(long begin, long end);
   /// Adds the mass, momentum, mass-weighted displacement and internal force of particles
-  /// [begin, end) to their links' fields.
+  /// [begin, end) to their nodes' fields.
   void scatter(long begin, long end);
   void update_grid();
   void contact();
   void apply_constraints();
   void grid_to_particles();
+  /// Velocity, position, deformation and stress of particles [begin, end) from the new grid
+  /// velocities, then their weights at the new positions; adds the chunk's energy terms to
+  /// sums (damping loss, FLIP kinetic-energy gain, strain energy of the increments) and returns
+  /// a particle that left the grid, or -1.
+  long update_particles(long begin, long end, double sums[3]);
+  /// Index in grid_.fields() of node (i0 + a, j0 + b) in the field particle p joins there.
+  int field_index(long p, int a, int b) const {
+    const int i = i0_[p] + a, j = j0_[p] + b;
+    const int side = split_column_[i] ? own_side_[p] : row_side_[j];
+    return 2 * (i * grid_.ny() + j) + side;
+  }
+  /// Calls f(field index, S, dS/dx, dS/dy) for the 3 x 3 links of particle p, a (x) outer.
+  template <class F>
+  void for_links(long p, F&& f) const {
+    const double *sx = &sx_[3 * p], *sy = &sy_[3 * p];
+    const double *dsx = &dsx_[3 * p], *dsy = &dsy_[3 * p];
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        f(field_index(p, a, b), sx[a] * sy[b], dsx[a] * sy[b], sx[a] * dsy[b]);
+  }
+  /// Runs body(begin, end) over the particles in chunks, on the team's threads.
+  template <class Body>
+  void for_particles(Body&& body);
   void check_state() const;
-
   Grid grid_;
   Particles particles_;
   OrthotropicElastic material_;
@@ -98,9 +128,23 @@ private:
   Crack* crack_ = nullptr;
   std::vector<VelocityConstraint> constraints_;
   std::vector<ParticleForce> particle_forces_;
-  std::vector<Link> links_;       ///< 9 per particle
-  std::vector<int> first_column_; ///< lowest node column each particle touches (this step)
+  // Shape weights at the current positions, structure of arrays: per particle the lowest node
+  // column and row it touches and three uGIMP weights and derivatives per axis; the 3 x 3 link
+  // weights are their products, formed where they are used. Computed at the end of each step,
+  // right after the particle moved, for the next one.
+  std::vector<int> i0_, j0_;
+  std::vector<double> sx_, dsx_, sy_, dsy_; ///< 3 per particle
+  bool weights_current_ = false;
+  long off_grid_ = -1;                      ///< a particle whose weights leave the grid, or -1
+  std::vector<unsigned char> own_side_;     ///< side of the crack plane of each particle
+  std::vector<unsigned char> row_side_;     ///< side of each node row
+  std::vector<unsigned char> split_column_; ///< node columns on the crack (this step)
   int threads_ = 1;
+  std::unique_ptr<WorkTeam> team_;
+  std::vector<double> chunk_sums_; ///< energy terms per particle chunk (summed in chunk order)
+  long parallel_steps_ = 0;
+  double phase_seconds_[3] = {0, 0, 0};
+  double probe_time_[2] = {0, 0}; ///< wall time of the serial and parallel probe steps [s]
   double time_ = 0;
   long steps_ = 0;
   double external_work_ = 0, damping_loss_ = 0, numerical_loss_ = 0;

@@ -47,11 +47,10 @@ struct MpmParameters {
   double steady_growth = 0;
   /// Safety bound on the number of time steps.
   long max_steps = 20'000'000;
-  /// Threads of the particle loops (needs the OpenMP build, FIBERBRIDGE_MPM_OPENMP). One by
-  /// default: a step of the default DCB takes about 0.4 ms, so every fork/join counts, and
-  /// libgomp's default spin-wait made 2 threads 4x slower than 1 when another process shared
-  /// the cores (measured; with GOMP_SPINCOUNT=10000 and idle cores, 2 threads ran 1.6x faster).
-  int threads = 1;
+  /// Threads of the particle loops (the solver's own team, work_team.h). Two by default: the
+  /// solver times steps with and without the helper and keeps the faster (on cores busy with
+  /// other processes one thread wins), and the results are the same for any number of threads.
+  int threads = 2;
   /// Write a particle VTU every this many tip advances (0 = none).
   int vtu_every_advances = 20;
 
