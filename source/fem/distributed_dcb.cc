@@ -1,38 +1,25 @@
-// Engine choice and the dimension dispatch of the distributed engine (light translation unit;
-// the engine itself is in distributed_dcb.templates.h, instantiated in distributed_dcb_2d.cc and
-// distributed_dcb_3d.cc).
+// The entry points of the FEM engine and its dimension dispatch (light translation unit; the
+// engine itself is in distributed_dcb.templates.h, instantiated in distributed_dcb_2d.cc and
+// distributed_dcb_3d.cc). One engine (issue 14): on one rank (MPI_COMM_SELF) it is the serial
+// program, as in deal.II's step-40.
 #include "fiberbridge/fem/distributed_dcb.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/law/numerical_fault.h"
 
 namespace fiberbridge::fem {
 
 namespace distributed {
 template <int dim>
-law::SimulationResult
-run_distributed(const law::Specimen&, const law::Material&, const law::TractionLaw&, double,
-                const FemParameters&, const std::string&,
-                const std::function<void(const std::string&)>&, MPI_Comm, DistributedRunInfo&);
+law::SimulationResult run_distributed(const law::Specimen&, const law::Material&,
+                                      const law::TractionLaw&, double, const FemParameters&,
+                                      const std::string&,
+                                      const std::function<void(const std::string&)>&, MPI_Comm,
+                                      DistributedRunInfo&, FemRunDetails&);
 } // namespace distributed
 
-bool use_distributed_engine(const FemParameters& p, unsigned n_ranks) {
-  switch (p.engine) {
-  case FemParameters::Engine::serial:
-    if (p.dimension == 3)
-      throw InputError("FEM/Engine = serial: the serial engine is 2D only; Dimension = 3 needs "
-                       "Engine = distributed (or auto)");
-    if (n_ranks > 1)
-      throw InputError("FEM/Engine = serial under mpirun with " + std::to_string(n_ranks) +
-                       " ranks: every rank would run the same serial model; use Engine = "
-                       "distributed (or auto), or run on one rank");
-    return false;
-  case FemParameters::Engine::distributed:
-    return true;
-  case FemParameters::Engine::automatic:
-    break;
-  }
-  return p.dimension == 3 || n_ranks > 1 || p.linear_solver == FemParameters::LinearSolver::mumps ||
-         p.linear_solver == FemParameters::LinearSolver::cg_amg;
+bool use_distributed_engine(const FemParameters&, unsigned) {
+  return true;
 }
 
 law::SimulationResult
@@ -40,16 +27,36 @@ simulate_dcb_distributed(const law::Specimen& specimen, const law::Material& mat
                          const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
                          const std::string& output_dir,
                          const std::function<void(const std::string&)>& progress, MPI_Comm comm,
-                         DistributedRunInfo* info) {
-  DistributedRunInfo local;
-  DistributedRunInfo& i = info ? *info : local;
+                         DistributedRunInfo* info, FemRunDetails* details) {
+  law::begin_fault_context("fem");
+  DistributedRunInfo local_info;
+  FemRunDetails local_details;
+  DistributedRunInfo& i = info ? *info : local_info;
+  FemRunDetails& d = details ? *details : local_details;
   if (parameters.dimension == 3)
     return distributed::run_distributed<3>(specimen, material, law, j_tip, parameters, output_dir,
-                                           progress, comm, i);
+                                           progress, comm, i, d);
   if (parameters.dimension == 2)
     return distributed::run_distributed<2>(specimen, material, law, j_tip, parameters, output_dir,
-                                           progress, comm, i);
+                                           progress, comm, i, d);
   throw InputError("FEM/Dimension: must be 2 or 3");
+}
+
+law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
+                                   const law::TractionLaw& law, double j_tip,
+                                   const FemParameters& parameters, const std::string& output_dir,
+                                   const std::function<void(const std::string&)>& progress) {
+  return simulate_dcb_distributed(specimen, material, law, j_tip, parameters, output_dir, progress,
+                                  MPI_COMM_SELF);
+}
+
+law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
+                                   const law::TractionLaw& law, double j_tip,
+                                   const FemParameters& parameters, const std::string& output_dir,
+                                   const std::function<void(const std::string&)>& progress,
+                                   FemRunDetails& details) {
+  return simulate_dcb_distributed(specimen, material, law, j_tip, parameters, output_dir, progress,
+                                  MPI_COMM_SELF, nullptr, &details);
 }
 
 } // namespace fiberbridge::fem

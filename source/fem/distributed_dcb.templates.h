@@ -1,40 +1,52 @@
 #pragma once
-// The distributed DCB engine (distributed_dcb.h), templated on the space dimension and
-// instantiated in distributed_dcb_2d.cc and distributed_dcb_3d.cc (one heavy translation unit
-// each, so that they compile in parallel).
+// The FEM engine of the DCB (distributed_dcb.h, dcb_simulation.h), templated on the space
+// dimension and instantiated in distributed_dcb_2d.cc and distributed_dcb_3d.cc (one heavy
+// translation unit each, so that they compile in parallel). One engine (issue 14): on one rank
+// (MPI_COMM_SELF) it is the serial program, as in deal.II's step-40.
 //
-// Same algorithm as the serial DcbModel (dcb_simulation.cc; read that file's header first), with
-// what MPI changes:
-// - Mesh: the serial mesh (crack-plane vertices doubled; in 3D extruded over the width) is the
-//   coarse mesh of a parallel::distributed::Triangulation. p4est builds its tree connectivity
-//   from shared vertices, and the two arms share none on the crack plane, so the slit stays
-//   open; p4est partitions the cells (each coarse cell is a tree, no refinement).
+// The algorithm (run()) in the paper's words (seed section 2.4): start from the sawn notch with
+// no cohesive zone; raise the load-point opening until the crack-tip energy release rate reaches
+// J_tip; release the tip node, which turns the segment ahead of the old tip into a fresh
+// cohesive segment; repeat. The zone grows behind the tip, its trailing edge (the notch root)
+// starts to move when the opening there passes delta_c, and the run stops at steady state.
+//
+// Choices:
+// - Crack plane doubled: the two arms are separate meshes on a vertex list of our own (in 3D
+//   extruded over the width), the coarse mesh of a parallel::distributed::Triangulation. p4est
+//   builds its tree connectivity from shared vertices, and the two arms share none on the crack
+//   plane, so the slit stays open; p4est partitions the cells (no refinement).
+// - Ahead of the tip the arms are tied by AffineConstraints (u_top = u_bottom per support point
+//   pair): exact, no penalty to tune, and release is removing a constraint line.
+// - Tip criterion: a domain J integral over a full-height strip around the tip, with the
+//   cohesive crack-face term (Moran & Shih). It is degree-independent and uses the same code as
+//   the far-field J, so tip J and J_ff are measured alike and their difference checks Eq. 1.
+// - The load-point opening at which tip J equals J_tip is found by a secant iteration on
+//   sqrt(J) (exact in one step for linear elasticity). When tip J exceeds J_tip right after a
+//   release (unstable growth), the tip advances again at fixed opening.
+// - Nonlinear solver (FEM/Nonlinear solver): own Newton with backtracking line search on the
+//   condensed residual (default), or SUNDIALS KINSOL with its line search on the same residual,
+//   Jacobian and linear solves. The release-library KINSOL does not report failure: its result is
+//   re-checked against the same convergence test.
 // - The crack plane (ties, cohesive points, the notch-root bookkeeping) is small next to the
 //   bulk: every rank holds ALL crack-plane dofs as ghosts (gathered with all_gather) and keeps an
-//   identical copy of the CohesiveInterface. A tied pair can live on two ranks that do not
-//   neighbour each other; with both dofs relevant everywhere, AffineConstraints condenses ties
-//   across ranks, and the Trilinos matrix takes the off-process rows at compress(add).
-// - The sparsity pattern holds the couplings of every crack-plane pair from the start (cell dofs
-//   extended by their partners, as in the serial engine), so releasing ties never changes it.
-// - Cohesive terms: each row of crack-plane faces (a "segment", the whole width in 3D) is
-//   assembled by the rank that owns its first top dof.
+//   identical copy of the CohesiveInterface. With both dofs of a tied pair relevant everywhere,
+//   AffineConstraints condenses ties across ranks; each row of crack-plane faces (a "segment",
+//   the whole width in 3D) is assembled by the rank that owns its first top dof.
 // - Every decision that steers the algorithm (convergence, line search, tip J against J_tip)
-//   uses sums reduced on rank 0 and broadcast, so all ranks take the same branch bit for bit.
-// - Linear solves: Amesos MUMPS (or KLU) on the distributed matrix, factorized after each release.
-//   Between releases the Jacobian differs from the factorized one only at the interface points
-//   that changed branch (a low-rank change, as in the serial engine's Woodbury update): the
-//   current Jacobian is then solved by GMRES preconditioned with the old factorization, which
-//   converges in about (changed points + 1) iterations, each one triangular solve; only when
-//   that takes many iterations is the Jacobian refactorized. In 3D a branch change happens at
-//   every z point of a station, and a factorization costs ~40 triangular solves (measured with
-//   KLU on 2232 dofs: 76 ms against 2 ms), so this is what makes 3D affordable.
-//   Or CG + ML AMG on an SPD secant Jacobian.
+//   uses global sums, so all ranks take the same branch.
+// - Residual: K u (the bulk stiffness assembled once) plus the interface forces, condensed.
+// - Linear solves (FEM/Linear solver): Amesos KLU or MUMPS on the condensed Jacobian, whose
+//   pattern follows the tie set; factorized after each release. Between releases the Jacobian
+//   differs from the factorized one only at the interface points that changed branch: a low-rank
+//   (Woodbury) correction, built from global dot products only. Or CG + ML AMG on an SPD secant
+//   Jacobian, set up again at every change.
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/fem/cohesive_interface.h"
 #include "fiberbridge/fem/dcb_common.h"
 #include "fiberbridge/fem/distributed_dcb.h"
+#include "fiberbridge/law/numerical_fault.h"
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/index_set.h>
@@ -94,6 +106,7 @@ public:
                       const std::function<void(const std::string&)>& progress, MPI_Comm comm);
   law::SimulationResult run();
   const DistributedRunInfo& info() const { return info_; }
+  const FemRunDetails& details() const { return details_; }
 
 private:
   /// One pair of coincident crack-plane support points (a "node"), at station (ix, iz).
@@ -201,24 +214,35 @@ private:
   std::vector<FullMatrix<double>> shape_matrices_;
   std::vector<unsigned> cell_shape_; ///< by active_cell_index, for locally owned cells
 
+  /// The bulk stiffness K, unconstrained (the residual is K u plus the interface forces,
+  /// condensed afterwards), on the extended sparsity pattern.
+  TrilinosWrappers::SparseMatrix bulk_;
+  /// The condensed Jacobian that the direct solver (or AMG) refers to.
   TrilinosWrappers::SparseMatrix jacobian_;
-  TrilinosWrappers::SparseMatrix factorized_matrix_; ///< the matrix the direct solver refers to
-  bool jacobian_is_factorized_ = false; ///< else GMRES preconditioned by the factorization
-  unsigned last_krylov_iterations_ = 0;
   std::unique_ptr<TrilinosWrappers::SolverDirect> direct_;
   SolverControl direct_control_;
   TrilinosWrappers::PreconditionAMG amg_;
   AffineConstraints<double> hom_;
   unsigned epoch_ = 0, factorized_epoch_ = ~0u;
-  std::vector<double> factorized_tangents_, assembled_tangents_;
-  void factorize();
-  /// The direct solver as a preconditioner (exact inverse of the factorized Jacobian).
-  struct FactorizationPreconditioner {
-    TrilinosWrappers::SolverDirect* solver;
-    void vmult(Vec& dst, const Vec& src) const { solver->solve(dst, src); }
+  std::vector<double> factorized_tangents_;
+  void factorize(const std::vector<double>& tangents);
+  void condense(const Vec& full, Vec& out);
+  void condensed_pattern();
+  unsigned pattern_epoch_ = ~0u;
+  /// Woodbury correction of the factorized Jacobian: changed point -> (tangent change dk, the
+  /// condensed opening operator c of the point, A^-1 c). Only global dot products combine
+  /// them, so the correction works on any number of ranks.
+  struct LowRankTerm {
+    double dk = 0;
+    Vec c, z;
   };
+  std::map<unsigned, LowRankTerm> low_rank_;
+  std::vector<const LowRankTerm*> woodbury_; ///< the active terms (dk != 0)
+  FullMatrix<double> woodbury_inverse_;      ///< (D^-1 + U^T Z)^-1 of the active terms
+  std::map<std::pair<unsigned, unsigned>, double> cz_;
+  LowRankTerm low_rank_term(unsigned p);
 
-  Vec u_, u_ghost_, scratch_ghost_;
+  Vec u_, u_ghost_, scratch_ghost_, residual_ghost_;
   double opening_ = 0;
   double work_ = 0; ///< external work per width [J/m]
   std::vector<std::pair<double, double>> path_;
@@ -227,6 +251,9 @@ private:
   DistributedRunInfo info_;
   std::vector<double> dissipated_;
   double max_opening_behind_tip_ = 0;
+  double tip_dissipated_ = 0;                   ///< energy released by the releases [J/m]
+  double j_after_release_ = law::not_available; ///< tip J right after the last release
+  FemRunDetails details_;
   unsigned n_trials_ = 0, n_unstable_ = 0;
   std::vector<std::pair<double, std::string>> pvd_records_;
 };
@@ -247,14 +274,13 @@ DistributedDcbModel<dim>::DistributedDcbModel(
   specimen_.validate();
   material_.validate();
   prm_.validate();
-  if (prm_.linear_solver == FemParameters::LinearSolver::umfpack)
-    throw InputError("FEM/Linear solver = umfpack: deal.II's UMFPACK is serial; the distributed "
-                     "engine takes mumps, klu or cg_amg");
   if (!(j_tip > 0))
     throw InputError("Cohesive law/J tip: the FEM tip criterion needs J tip > 0");
   if (dim == 3)
     width_ = specimen_.width;
   law_ = insertable_law(law, material, prm_, regularized_law_, result_.notes);
+  for (const auto& note : prm_.deprecation_notes)
+    result_.notes.push_back(note);
 }
 
 template <int dim>
@@ -280,7 +306,7 @@ double DistributedDcbModel<dim>::norm(const Vec& v) const {
 
 template <int dim>
 void DistributedDcbModel<dim>::make_grid() {
-  // x and y lines exactly as the serial engine (one element per advance, graded heights).
+  // x and y lines from dcb_mesh_lines (one element per advance, graded heights).
   const DcbMeshLines lines = dcb_mesh_lines(specimen_, prm_);
   dx_ = lines.dx;
   x_lines_ = lines.x;
@@ -410,8 +436,8 @@ void DistributedDcbModel<dim>::setup_system() {
     throw ComputationError("FEM mesh: the crack-plane nodes do not form a grid in x and z");
   load_top_.assign(load_top.begin(), load_top.end());
   load_bottom_.assign(load_bottom.begin(), load_bottom.end());
-  // Rigid-body modes: the crack-plane line at x = L is held in x and y (in 2D that is the
-  // serial engine's point); in 3D its z = 0 end also in z. The load line fixes the rotations
+  // Rigid-body modes: the crack-plane line at x = L is held in x and y (in 2D the
+  // crack-plane point); in 3D its z = 0 end also in z. The load line fixes the rotations
   // about x and z, the line the rotation about y. It carries no load under symmetric opening.
   support_.clear();
   for (unsigned iz = 0; iz < n_z_; ++iz) {
@@ -438,36 +464,21 @@ void DistributedDcbModel<dim>::setup_system() {
   relevant_.add_indices(special.begin(), special.end());
   relevant_.compress();
 
-  // Sparsity: the couplings of every cell extended by the crack-plane partners of its dofs: the
-  // condensed matrix of ANY tie set then fits (see the serial engine), and the cohesive
-  // top-bottom couplings are contained.
-  std::unordered_map<types::global_dof_index, types::global_dof_index> partner;
-  for (const auto& n : nodes_)
-    for (unsigned d = 0; d < dim; ++d) {
-      partner[n.top[d]] = n.bottom[d];
-      partner[n.bottom[d]] = n.top[d];
-    }
+  // The bulk stiffness has the plain cell couplings; the Jacobian's pattern follows the tie set
+  // (condensed_pattern(), rebuilt at each release).
   DynamicSparsityPattern dsp(relevant_);
-  std::vector<types::global_dof_index> extended;
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
-    if (!cell->is_locally_owned())
-      continue;
-    cell->get_dof_indices(dofs);
-    extended = dofs;
-    for (const auto d : dofs) {
-      const auto it = partner.find(d);
-      if (it != partner.end())
-        extended.push_back(it->second);
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+    if (cell->is_locally_owned()) {
+      cell->get_dof_indices(dofs);
+      for (const auto i : dofs)
+        dsp.add_entries(i, dofs.begin(), dofs.end());
     }
-    std::sort(extended.begin(), extended.end());
-    for (const auto i : extended)
-      dsp.add_entries(i, extended.begin(), extended.end(), true);
-  }
   SparsityTools::distribute_sparsity_pattern(dsp, owned_, comm_, relevant_);
-  jacobian_.reinit(owned_, owned_, dsp, comm_);
+  bulk_.reinit(owned_, owned_, dsp, comm_);
   u_.reinit(owned_, comm_);
   u_ghost_.reinit(owned_, relevant_, comm_);
   scratch_ghost_.reinit(owned_, relevant_, comm_);
+  residual_ghost_.reinit(owned_, relevant_, comm_);
 
   // Bulk cell matrices by cell shape (vertex offsets from vertex 0, rounded).
   const QGauss<dim> quadrature(prm_.degree + 1);
@@ -507,6 +518,12 @@ void DistributedDcbModel<dim>::setup_system() {
     cell_shape_[cell->active_cell_index()] = shape_matrices_.size();
     shape_matrices_.push_back(std::move(m));
   }
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+    if (cell->is_locally_owned()) {
+      cell->get_dof_indices(dofs);
+      bulk_.add(dofs, shape_matrices_[cell_shape_[cell->active_cell_index()]]);
+    }
+  bulk_.compress(VectorOperation::add);
   make_interface();
   info_.t_setup += seconds_since(t0);
 }
@@ -588,7 +605,7 @@ void DistributedDcbModel<dim>::make_interface() {
     for (const unsigned ix : seg_st)
       for (unsigned iz = 0; iz < n_z_; ++iz)
         seg_nodes.push_back(node_index(ix, iz));
-    // Composite Lobatto in x exactly as the serial engine (joints of sub-intervals merged).
+    // Composite Lobatto in x (joints of sub-intervals merged).
     std::vector<double> xs, ws;
     for (unsigned i = 0; i < m; ++i)
       for (unsigned q = 0; q < lobatto.size(); ++q) {
@@ -672,24 +689,11 @@ void DistributedDcbModel<dim>::make_constraints(double opening,
 
 template <int dim>
 void DistributedDcbModel<dim>::assemble_residual(const Vec& u, Vec& r, Vec& r_full) {
-  // r = the condensed residual (ties moved to their partners, prescribed rows dropped), r_full
-  // the plain one (its load-line rows are the reactions). Same quantities as the serial engine.
+  // r_full = K u + interface forces (its load-line rows are the reactions); r = r_full
+  // condensed (ties moved to their partners, prescribed rows dropped).
   const auto t0 = Clock::now();
   scratch_ghost_ = u;
-  r = 0;
-  r_full = 0;
-  const unsigned n = fe_.n_dofs_per_cell();
-  std::vector<types::global_dof_index> dofs(n);
-  Vector<double> u_cell(n), f(n);
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
-    if (!cell->is_locally_owned())
-      continue;
-    cell->get_dof_indices(dofs);
-    cell->get_dof_values(scratch_ghost_, u_cell);
-    shape_matrices_[cell_shape_[cell->active_cell_index()]].vmult(f, u_cell);
-    hom_.distribute_local_to_global(f, dofs, r);
-    r_full.add(dofs, f);
-  }
+  bulk_.vmult(r_full, u);
   // Interface forces of the opened segments this rank assembles.
   for (unsigned s = 0; s < interface_->n_segments(); ++s) {
     if (!segment_mine_[s] || interface_->state(s) == SegmentState::intact)
@@ -717,20 +721,46 @@ void DistributedDcbModel<dim>::assemble_residual(const Vec& u, Vec& r, Vec& r_fu
         fl[sn.size() + map.local[a]] -= map.N[a] * force;
       }
     }
-    if (any) {
-      hom_.distribute_local_to_global(fl, sd, r);
+    if (any)
       r_full.add(sd, fl);
-    }
   }
-  r.compress(VectorOperation::add);
   r_full.compress(VectorOperation::add);
+  condense(r_full, r);
   info_.t_assemble += seconds_since(t0);
 }
 
 template <int dim>
+void DistributedDcbModel<dim>::condense(const Vec& full, Vec& out) {
+  // out = full with each constrained value moved to the dofs it is tied to and the constrained
+  // rows zeroed: what distribute_local_to_global does during assembly. (AffineConstraints::
+  // condense(ghosted, out) assigns the ghosted vector to `out`, which a Trilinos vector takes
+  // as a change of its layout on more than one rank.) Every rank holds all constrained dofs as
+  // ghosts.
+  // One add() and one set() per rank, with lists that may be empty: a Trilinos vector switching
+  // between adding and setting assembles globally (collective), so no rank may skip the call.
+  residual_ghost_ = full;
+  out = full;
+  std::vector<types::global_dof_index> idx;
+  std::vector<double> val;
+  for (const auto& line : hom_.get_lines())
+    for (const auto& [j, w] : line.entries)
+      if (owned_.is_element(j)) {
+        idx.push_back(j);
+        val.push_back(w * residual_ghost_[line.index]);
+      }
+  out.add(idx, val);
+  out.compress(VectorOperation::add);
+  idx.clear();
+  for (const auto& line : hom_.get_lines())
+    if (owned_.is_element(line.index))
+      idx.push_back(line.index);
+  out.set(idx, std::vector<double>(idx.size(), 0.0));
+  out.compress(VectorOperation::insert);
+}
+
+template <int dim>
 void DistributedDcbModel<dim>::update_jacobian() {
-  // Tangents of all interface points (identical on every rank). The Jacobian changes only
-  // when they or the ties change.
+  // Tangents of all interface points (identical on every rank).
   const bool amg = prm_.linear_solver == FemParameters::LinearSolver::cg_amg;
   const auto o = openings();
   std::vector<double> tangents(point_map_.size());
@@ -743,9 +773,125 @@ void DistributedDcbModel<dim>::update_jacobian() {
     if (amg && tangents[p] < 0)
       tangents[p] = o[p] > 0 ? std::max(0.0, resp.force / o[p]) : 0.0;
   }
-  if (factorized_epoch_ == epoch_ && tangents == assembled_tangents_)
-    return;
+  // The bulk is linear and piecewise-linear laws have piecewise-constant tangents: between two
+  // releases the Jacobian differs from the factorized one only at the interface points that
+  // changed branch, each a rank-one term dk c c^T. A few of them are cheaper as a Woodbury
+  // correction (one solve each) than a new factorization; in 3D a branch change happens at every
+  // z point of a station, hence the cap per z station. A release changes the constrained space
+  // itself: always refactorize. AMG has no cheap exact inverse: it is set up again.
+  if (factorized_epoch_ == epoch_) {
+    if (tangents == factorized_tangents_ && low_rank_.empty())
+      return;
+    std::vector<unsigned> changed;
+    for (unsigned p = 0; p < tangents.size(); ++p)
+      if (tangents[p] != factorized_tangents_[p])
+        changed.push_back(p);
+    const std::size_t max_low_rank = 12 * n_z_; // ~ one factorization worth of solves (2D)
+    if (!amg && changed.size() <= max_low_rank) {
+      const auto t0 = Clock::now();
+      std::map<unsigned, LowRankTerm> terms;
+      for (const unsigned p : changed) {
+        auto it = low_rank_.find(p);
+        LowRankTerm term = it != low_rank_.end() ? std::move(it->second) : low_rank_term(p);
+        term.dk = tangents[p] - factorized_tangents_[p];
+        terms.emplace(p, std::move(term));
+      }
+      for (auto& [p, term] : low_rank_) // keep unused vectors for later branch changes
+        if (terms.find(p) == terms.end()) {
+          term.dk = 0;
+          terms.emplace(p, std::move(term));
+        }
+      low_rank_ = std::move(terms);
+      // The small matrix S = D^-1 + U^T Z of the active terms, inverted once per Jacobian;
+      // the dot products c_p . z_q are kept while the factorization lives.
+      woodbury_.clear();
+      for (const auto& [p, term] : low_rank_)
+        if (term.dk != 0)
+          woodbury_.push_back(&term);
+      std::vector<unsigned> ids;
+      for (const auto& [p, term] : low_rank_)
+        if (term.dk != 0)
+          ids.push_back(p);
+      const unsigned k = ids.size();
+      woodbury_inverse_.reinit(k, k);
+      for (unsigned i = 0; i < k; ++i)
+        for (unsigned j = 0; j < k; ++j) {
+          auto it = cz_.find({ids[i], ids[j]});
+          if (it == cz_.end())
+            it = cz_.emplace(std::make_pair(ids[i], ids[j]), woodbury_[i]->c * woodbury_[j]->z)
+                     .first;
+          woodbury_inverse_(i, j) = it->second + (i == j ? 1 / woodbury_[i]->dk : 0.0);
+        }
+      if (k > 0)
+        woodbury_inverse_.gauss_jordan();
+      info_.t_solve += seconds_since(t0);
+      return;
+    }
+  }
+  factorize(tangents);
+}
+
+template <int dim>
+typename DistributedDcbModel<dim>::LowRankTerm DistributedDcbModel<dim>::low_rank_term(unsigned p) {
+  LowRankTerm term;
+  term.c.reinit(owned_, comm_);
+  const auto& map = point_map_[p];
+  std::vector<types::global_dof_index> idx;
+  std::vector<double> val;
+  for (unsigned a = 0; a < map.nodes.size(); ++a) {
+    const auto& n = nodes_[map.nodes[a]];
+    if (owned_.is_element(n.top[1])) {
+      idx.push_back(n.top[1]);
+      val.push_back(map.N[a]);
+    }
+    if (owned_.is_element(n.bottom[1])) {
+      idx.push_back(n.bottom[1]);
+      val.push_back(-map.N[a]);
+    }
+  }
+  term.c.add(idx, val);
+  term.c.compress(VectorOperation::add);
+  condense(Vec(term.c), term.c);
+  term.z.reinit(owned_, comm_);
+  direct_->solve(term.z, term.c);
+  ++info_.n_linear_solves;
+  return term;
+}
+
+template <int dim>
+void DistributedDcbModel<dim>::condensed_pattern() {
+  // The couplings of the condensed Jacobian for the current ties: cells and opened segments
+  // with the ties applied, no entry for a coupling that condensation removes. The direct
+  // solvers factorize every stored entry, zero or not: on the pattern of all possible tie sets
+  // (cells extended by the crack-plane partners) KLU's factors and solves cost twice as much.
+  DynamicSparsityPattern dsp(relevant_);
+  std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+    if (cell->is_locally_owned()) {
+      cell->get_dof_indices(dofs);
+      hom_.add_entries_local_to_global(dofs, dsp, false);
+    }
+  for (unsigned s = 0; s < interface_->n_segments(); ++s) {
+    if (!segment_mine_[s] || interface_->state(s) == SegmentState::intact)
+      continue;
+    std::vector<types::global_dof_index> sd;
+    for (const unsigned a : segment_nodes_[s]) {
+      sd.push_back(nodes_[a].top[1]);
+      sd.push_back(nodes_[a].bottom[1]);
+    }
+    hom_.add_entries_local_to_global(sd, dsp, false);
+  }
+  SparsityTools::distribute_sparsity_pattern(dsp, owned_, comm_, relevant_);
+  jacobian_.reinit(owned_, owned_, dsp, comm_);
+  pattern_epoch_ = epoch_;
+}
+
+template <int dim>
+void DistributedDcbModel<dim>::factorize(const std::vector<double>& tangents) {
   const auto t0 = Clock::now();
+  direct_.reset(); // it refers to jacobian_: destroy it before the matrix changes
+  if (pattern_epoch_ != epoch_)
+    condensed_pattern();
   jacobian_ = 0;
   const unsigned n = fe_.n_dofs_per_cell();
   std::vector<types::global_dof_index> dofs(n);
@@ -788,20 +934,9 @@ void DistributedDcbModel<dim>::update_jacobian() {
   }
   jacobian_.compress(VectorOperation::add);
   info_.t_assemble += seconds_since(t0);
-  const bool same_space = factorized_epoch_ == epoch_;
-  assembled_tangents_ = tangents;
-  jacobian_is_factorized_ = tangents == factorized_tangents_ && same_space;
-  // A release changes the constrained space: always refactorize. Otherwise keep the old
-  // factorization as GMRES preconditioner while that converges fast (direct solvers only).
-  if (!same_space || amg || last_krylov_iterations_ > 20)
-    factorize();
-}
 
-template <int dim>
-void DistributedDcbModel<dim>::factorize() {
-  const bool amg = prm_.linear_solver == FemParameters::LinearSolver::cg_amg;
   const auto t1 = Clock::now();
-  if (amg) {
+  if (prm_.linear_solver == FemParameters::LinearSolver::cg_amg) {
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic = true;
     data.higher_order_elements = prm_.degree > 1;
@@ -839,19 +974,18 @@ void DistributedDcbModel<dim>::factorize() {
     list.set("null space: vectors", modes.Values());
     amg_.initialize(jacobian_, list);
   } else {
-    direct_.reset(); // it refers to factorized_matrix_: destroy it before the matrix changes
-    factorized_matrix_.copy_from(jacobian_);
     direct_ = std::make_unique<TrilinosWrappers::SolverDirect>(
         direct_control_,
         TrilinosWrappers::SolverDirect::AdditionalData(
             false, prm_.linear_solver == FemParameters::LinearSolver::mumps ? "Amesos_Mumps"
                                                                             : "Amesos_Klu"));
-    direct_->initialize(factorized_matrix_); // symbolic and numeric factorization
+    direct_->initialize(jacobian_); // symbolic and numeric factorization
   }
-  factorized_tangents_ = assembled_tangents_;
+  factorized_tangents_ = tangents;
   factorized_epoch_ = epoch_;
-  jacobian_is_factorized_ = true;
-  last_krylov_iterations_ = 0;
+  low_rank_.clear();
+  woodbury_.clear();
+  cz_.clear();
   ++info_.n_factorizations;
   info_.t_factorize += seconds_since(t1);
 }
@@ -871,27 +1005,17 @@ void DistributedDcbModel<dim>::solve_linear(const Vec& rhs, Vec& x) {
                              std::to_string(control.last_step()) + " iterations (residual " +
                              fmt(control.last_value()) + "); use mumps");
     }
-  } else if (jacobian_is_factorized_)
+  } else {
+    // Woodbury: (A + U D U^T)^-1 b = y - Z (D^-1 + U^T Z)^-1 U^T y, y = A^-1 b, Z = A^-1 U.
     direct_->solve(x, rhs);
-  else {
-    // The current Jacobian = factorized one + the branch changes since: GMRES with the old
-    // factorization as (exact-inverse) preconditioner. 1e-12 of the right-hand side makes the
-    // step as exact as a direct solve for the Newton test (1e-9 of the reaction).
-    const double tol = 1e-12 * norm(rhs);
-    SolverControl control(40, tol);
-    SolverGMRES<Vec> gmres(control, typename SolverGMRES<Vec>::AdditionalData(42, true));
-    x = 0;
-    bool ok = true;
-    try {
-      gmres.solve(jacobian_, x, rhs, FactorizationPreconditioner{direct_.get()});
-    } catch (const std::exception&) {
-      ok = false;
-    }
-    last_krylov_iterations_ = control.last_step();
-    info_.n_linear_solves += control.last_step();
-    if (!ok) { // many branch changes: a fresh factorization is the cheaper way
-      factorize();
-      direct_->solve(x, rhs);
+    if (!woodbury_.empty()) {
+      const unsigned k = woodbury_.size();
+      Vector<double> w(k), v(k);
+      for (unsigned i = 0; i < k; ++i)
+        w[i] = woodbury_[i]->c * x;
+      woodbury_inverse_.vmult(v, w);
+      for (unsigned i = 0; i < k; ++i)
+        x.add(-v[i], woodbury_[i]->z);
     }
   }
   ++info_.n_linear_solves;
@@ -941,7 +1065,7 @@ bool DistributedDcbModel<dim>::newton(double opening, std::string& diagnosis) {
     solve_linear(rhs, du);
     hom_.distribute(du);
 
-    // Backtracking line search on the condensed residual norm (as the serial engine).
+    // Backtracking line search on the condensed residual norm.
     double alpha = 1, best_alpha = 0, best_norm = nrm, best_ref = ref;
     for (int ls = 0; ls < 8; ++ls, alpha *= 0.5) {
       trial = u_;
@@ -975,9 +1099,9 @@ bool DistributedDcbModel<dim>::newton(double opening, std::string& diagnosis) {
 template <int dim>
 bool DistributedDcbModel<dim>::kinsol(double opening, std::string& diagnosis) {
   // SUNDIALS KINSOL on TrilinosWrappers::MPI::Vector (its N_Vector wrapper reduces over the
-  // vectors' communicator): the serial engine's setup, on the same condensed residual, Jacobian
-  // and linear solves as newton(). The release library does not report a failed solve
-  // (docs/design.md section 7): the result is re-checked against the Newton test here.
+  // vectors' communicator), on the same condensed residual, Jacobian and linear solves as
+  // newton(). The release library does not report a failed solve (docs/design.md section 7): the
+  // result is re-checked against the Newton test here.
   predict(opening);
   Vec r(owned_, comm_), rf(owned_, comm_);
   assemble_residual(u_, r, rf);
@@ -989,7 +1113,7 @@ bool DistributedDcbModel<dim>::kinsol(double opening, std::string& diagnosis) {
   data.strategy = Kinsol::AdditionalData::linesearch;
   data.maximum_non_linear_iterations = prm_.max_newton_iterations;
   // Max-norm stop below tolerance / sqrt(n) guarantees the l2 test; the step tolerance stops
-  // only on stagnation (see the serial engine).
+  // only on stagnation.
   data.function_tolerance = prm_.newton_tolerance * ref / std::sqrt(double(dof_handler_.n_dofs()));
   data.step_tolerance = 1e-3 * prm_.newton_tolerance * opening;
   data.maximum_setup_calls = 1;
@@ -1081,13 +1205,15 @@ void DistributedDcbModel<dim>::solve_at(double target) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Crack growth (the serial engine's algorithm)
+// Crack growth
 
 template <int dim>
 bool DistributedDcbModel<dim>::load_to_critical() {
   auto t0 = Clock::now();
   double J = tip_j();
   info_.t_j += seconds_since(t0);
+  if (!result_.rcurve.empty())
+    j_after_release_ = J;
   if (J >= (1 - prm_.tip_tolerance) * j_tip_) {
     if (J > (1 + prm_.tip_tolerance) * j_tip_)
       ++n_unstable_;
@@ -1193,7 +1319,7 @@ template <int dim>
 double DistributedDcbModel<dim>::domain_j(const Ramp& q, bool crack_face_term) const {
   // J B = int_V (sigma_i1 u_i,1 - W) q,1 dV + int_faces sigma_coh d(delta)/dx q dA (Moran & Shih;
   // q = q(x) across the whole width, so in 3D this is the width average of J along a straight
-  // front). Divided by the width: per unit width, as the serial engine's 2D J.
+  // front). Divided by the width: per unit width, as the 2D J.
   const QGauss<dim> quadrature(prm_.degree + 1);
   FEValues<dim> fe_values(mapping_, fe_, quadrature,
                           update_gradients | update_JxW_values | update_quadrature_points);
@@ -1271,16 +1397,7 @@ double DistributedDcbModel<dim>::far_field_j() const {
 
 template <int dim>
 double DistributedDcbModel<dim>::bulk_energy() const {
-  const unsigned n = fe_.n_dofs_per_cell();
-  Vector<double> u_cell(n), f(n);
-  double U = 0;
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
-    if (!cell->is_locally_owned())
-      continue;
-    cell->get_dof_values(u_ghost_, u_cell);
-    U += 0.5 * shape_matrices_[cell_shape_[cell->active_cell_index()]].matrix_norm_square(u_cell);
-  }
-  return gsum(U) / width_;
+  return 0.5 * bulk_.matrix_norm_square(u_) / width_;
 }
 
 template <int dim>
@@ -1310,9 +1427,9 @@ law::RCurvePoint DistributedDcbModel<dim>::record_advance() {
   pt.a = x_tip;
   const auto nodal = node_openings();
 
-  // Notch root as in the serial engine, on stations (x positions of the interface points; in
+  // Notch root on stations (x positions of the interface points; in
   // 3D their width averages: opening, and failed when the width-averaged delta_max passed
-  // delta_c). In 2D a station is one point and this is the serial rule.
+  // delta_c). In 2D a station is one point.
   const double dc = law_->critical_opening();
   if (dc <= 0) {
     pt.root = x_tip;
@@ -1380,6 +1497,11 @@ law::RCurvePoint DistributedDcbModel<dim>::record_advance() {
   if (!result_.rcurve.empty())
     pt.R_energy = (dissipated - dissipated_.back()) / (x_tip - result_.rcurve.back().a);
   dissipated_.push_back(dissipated);
+  details_.zone_dissipated.push_back(interface_->dissipated_energy() / width_ * B);
+  details_.tip_dissipated.push_back(tip_dissipated_ * B);
+  details_.j_after_release.push_back(j_after_release_);
+  // Eq. 1 term measured on the FE fields: minus the crack-face term with q = 1 everywhere.
+  details_.zone_integral.push_back(-crack_face_j(nullptr));
   return pt;
 }
 
@@ -1409,11 +1531,19 @@ void DistributedDcbModel<dim>::output_fields(unsigned advance) {
     s = float(triangulation_.locally_owned_subdomain());
   data_out.add_data_vector(subdomain, "rank");
   data_out.build_patches(mapping_, prm_.degree);
-  // One .vtu piece per rank and a .pvtu record (collective); rank 0 keeps the .pvd series with
+  // One rank: fem_dcb-NNNN.vtu, the files of the one-process runs before issue 14. Several:
+  // one .vtu piece per rank and a .pvtu record (collective). Rank 0 keeps the .pvd series with
   // the crack-tip position in mm as its time axis.
-  const std::string pvtu =
-      data_out.write_vtu_with_pvtu_record(output_dir_ + "/", "fem_dcb", advance, comm_, 4);
-  pvd_records_.emplace_back(x_st_[tip_] / units::mm, pvtu);
+  std::string name;
+  if (n_ranks_ == 1) {
+    std::ostringstream file;
+    file << "fem_dcb-" << std::setw(4) << std::setfill('0') << advance << ".vtu";
+    name = file.str();
+    std::ofstream vtu(output_dir_ + "/" + name);
+    data_out.write_vtu(vtu);
+  } else
+    name = data_out.write_vtu_with_pvtu_record(output_dir_ + "/", "fem_dcb", advance, comm_, 4);
+  pvd_records_.emplace_back(x_st_[tip_] / units::mm, name);
   if (rank_ == 0) {
     std::ofstream pvd(output_dir_ + "/fem_dcb.pvd");
     DataOutBase::write_pvd_record(pvd, pvd_records_);
@@ -1507,6 +1637,7 @@ law::SimulationResult DistributedDcbModel<dim>::run() {
     }
     load_to_critical();
     const law::RCurvePoint pt = record_advance();
+    law::check_rcurve_point(pt); // NaN/Inf ends the run naming the column (the same on every rank)
     result_.rcurve.push_back(pt);
     if (first_root_move < 0 && pt.root > a0 + 1e-9 * L)
       first_root_move = pt.a;
@@ -1519,9 +1650,11 @@ law::SimulationResult DistributedDcbModel<dim>::run() {
     ++advance;
     if (prm_.output_every > 0 && advance % prm_.output_every == 0)
       output_fields(advance);
+    const double before = stored_energy();
     release_tip();
-    solve_at(opening_);
+    solve_at(opening_); // re-equilibrate at fixed opening after the release
     interface_->commit(openings());
+    tip_dissipated_ += before - stored_energy(); // no external work at fixed opening
     path_.emplace_back(opening_, load_per_width());
   }
   output_fields(advance + 1);
@@ -1534,8 +1667,13 @@ law::SimulationResult DistributedDcbModel<dim>::run() {
         "resolution: the opening one element behind the tip reached " +
         fmt(max_opening_behind_tip_ / units::mm) + " mm, past the law's first linear branch (" +
         fmt(rise / units::mm) +
-        " mm): the traction varies strongly within the tip element; if R_J falls below Eq. 2, "
-        "refine FEM/Element size or raise FEM/Interface sub-intervals");
+        " mm): the traction varies strongly within the tip element, integrated with " +
+        std::to_string(prm_.interface_subintervals) +
+        " sub-intervals per element; if R_J falls below Eq. 2, refine FEM/Element size or raise "
+        "FEM/Interface sub-intervals" +
+        (regularized_law_ ? " (or lower FEM/Rigid law stiffness factor)" : ""));
+  details_.unstable_advances = n_unstable_;
+  details_.simulated_law_area = law_->area();
   if (dim == 3 && !material_.plane_stress)
     result_.notes.push_back("Material/Plane = strain is not used in 3D: the solid with free "
                             "side faces decides the out-of-plane state");
@@ -1585,16 +1723,17 @@ law::SimulationResult DistributedDcbModel<dim>::run() {
 }
 
 template <int dim>
-law::SimulationResult run_distributed(const law::Specimen& specimen, const law::Material& material,
-                                      const law::TractionLaw& law, double j_tip,
-                                      const FemParameters& parameters,
-                                      const std::string& output_dir,
-                                      const std::function<void(const std::string&)>& progress,
-                                      MPI_Comm comm, DistributedRunInfo& info) {
+law::SimulationResult
+run_distributed(const law::Specimen& specimen, const law::Material& material,
+                const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
+                const std::string& output_dir,
+                const std::function<void(const std::string&)>& progress, MPI_Comm comm,
+                DistributedRunInfo& info, FemRunDetails& details) {
   DistributedDcbModel<dim> model(specimen, material, law, j_tip, parameters, output_dir, progress,
                                  comm);
   auto result = model.run();
   info = model.info();
+  details = model.details();
   return result;
 }
 

@@ -8,6 +8,6 @@ template law::SimulationResult run_distributed<2>(const law::Specimen&, const la
                                                   const law::TractionLaw&, double,
                                                   const FemParameters&, const std::string&,
                                                   const std::function<void(const std::string&)>&,
-                                                  MPI_Comm, DistributedRunInfo&);
+                                                  MPI_Comm, DistributedRunInfo&, FemRunDetails&);
 
 } // namespace fiberbridge::fem::distributed

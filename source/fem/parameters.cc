@@ -33,23 +33,20 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Maximum Newton iterations", "25", Integer(1),
                     "Nonlinear iterations per equilibrium solve (either nonlinear solver).");
   prm.declare_entry("Linear solver", "klu", dealii::Patterns::Selection("klu|umfpack|mumps|cg_amg"),
-                    "Solver of the Jacobian systems. Serial engine: klu (Trilinos Amesos KLU) or "
-                    "umfpack (UMFPACK through deal.II); both give the same R curve to round-off. "
-                    "Distributed engine: mumps (Trilinos Amesos MUMPS, distributed direct; the "
-                    "choice for MPI runs), klu (Amesos KLU: the matrix is gathered on one rank), "
-                    "or cg_amg (CG with Trilinos ML AMG: the Jacobian is made SPD by using the "
-                    "secant instead of the negative softening tangent, so Newton becomes a "
-                    "quasi-Newton with the same residual test; for meshes too large for a direct "
-                    "solver).");
+                    "Solver of the Jacobian systems: klu (Trilinos Amesos KLU; on several ranks "
+                    "the matrix is gathered on one), mumps (Trilinos Amesos MUMPS, distributed "
+                    "direct; the choice for MPI runs), both with a low-rank (Woodbury) update "
+                    "between factorizations; or cg_amg (CG with Trilinos ML AMG: the Jacobian is "
+                    "made SPD by using the secant instead of the negative softening tangent, so "
+                    "Newton becomes a quasi-Newton with the same residual test; for meshes too "
+                    "large for a direct solver). umfpack: deprecated, runs klu (the one engine "
+                    "has no serial-only solver).");
   prm.declare_entry("Dimension", "2", Integer(2, 3),
                     "2: plane stress/strain (Material/Plane); 3: the specimen extruded over "
                     "Specimen/Width with free side faces (Material/Plane is then not used).");
   prm.declare_entry("Engine", "auto", dealii::Patterns::Selection("auto|serial|distributed"),
-                    "serial: the one-process 2D engine (KLU/UMFPACK with low-rank updates); "
-                    "distributed: deal.II parallel::distributed::Triangulation (p4est) with "
-                    "Trilinos MPI matrices, for 3D and for mpirun; auto: distributed when "
-                    "Dimension = 3, when run on more than one MPI rank, or when Linear solver is "
-                    "mumps or cg_amg, else serial.");
+                    "Deprecated and ignored: there is one engine (p4est + Trilinos, serial on "
+                    "one rank); a value other than auto leaves a note in the run's notes.");
   prm.declare_entry("Width elements", "0", Integer(0),
                     "3D only: element layers across the width (0: width / element size, "
                     "rounded, at least 1).");
@@ -95,15 +92,18 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   max_newton_iterations = prm.get_integer("Maximum Newton iterations");
   // The patterns admit only these values.
   const std::string ls = prm.get("Linear solver");
-  linear_solver = ls == "umfpack"  ? LinearSolver::umfpack
-                  : ls == "mumps"  ? LinearSolver::mumps
+  linear_solver = ls == "mumps"    ? LinearSolver::mumps
                   : ls == "cg_amg" ? LinearSolver::cg_amg
                                    : LinearSolver::klu;
+  deprecation_notes.clear();
+  if (ls == "umfpack")
+    deprecation_notes.push_back("FEM/Linear solver = umfpack is deprecated: ran klu (the one "
+                                "engine's direct solvers are klu and mumps)");
   dimension = prm.get_integer("Dimension");
-  const std::string engine_name = prm.get("Engine");
-  engine = engine_name == "serial"        ? Engine::serial
-           : engine_name == "distributed" ? Engine::distributed
-                                          : Engine::automatic;
+  if (prm.get("Engine") != "auto")
+    deprecation_notes.push_back("FEM/Engine = " + prm.get("Engine") +
+                                " is deprecated and ignored: one engine (p4est + Trilinos) runs "
+                                "on any number of ranks");
   width_elements = prm.get_integer("Width elements");
   G_LR_over_E_L = prm.get_double("G_LR over E_L");
   G_RT_over_E_L = prm.get_double("G_RT over E_L");
@@ -144,15 +144,6 @@ void FemParameters::validate() const {
   require(G_LR_over_E_L > 0, "G_LR over E_L", "must be positive");
   require(G_RT_over_E_L > 0, "G_RT over E_L", "must be positive");
   require(linear_tolerance > 0 && linear_tolerance < 1, "Linear tolerance", "must lie in (0, 1)");
-  // The serial engine is 2D and has only the serial direct solvers; the distributed engine
-  // has no UMFPACK (deal.II's is serial) and no KINSOL coupling yet.
-  require(!(engine == Engine::serial && dimension == 3), "Engine",
-          "serial is 2D only; Dimension = 3 needs Engine = distributed (or auto)");
-  require(!(engine == Engine::serial &&
-            (linear_solver == LinearSolver::mumps || linear_solver == LinearSolver::cg_amg)),
-          "Linear solver",
-          "mumps and cg_amg need the distributed engine (Engine = "
-          "distributed, or Dimension = 3, or mpirun)");
 }
 
 } // namespace fiberbridge::fem

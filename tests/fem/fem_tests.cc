@@ -392,11 +392,11 @@ TEST(FemDcb, NewtonFailureIsDiagnosed) {
 // round-off (1e-13 relative or less for these well-conditioned systems), which neither the
 // secant search on tip J nor the branch decisions of the law may amplify: the R curves must
 // agree to 1e-8 relative (a systematic difference, e.g. a stale factorization, shows as 1e-4).
-TEST(FemDcb, KluAndUmfpackGiveTheSameRCurve) {
+TEST(FemDcb, KluAndMumpsGiveTheSameRCurve) {
   const auto& run = linear_softening();
   ASSERT_EQ(run.prm.linear_solver, fem::FemParameters::LinearSolver::klu); // the default
   fem::FemParameters prm = run.prm;
-  prm.linear_solver = fem::FemParameters::LinearSolver::umfpack;
+  prm.linear_solver = fem::FemParameters::LinearSolver::mumps;
   const auto r = fem::simulate_dcb(run.spec, run.wood, run.law, run.j_tip, prm);
   const auto& k = run.result;
   ASSERT_TRUE(k.reached_steady_state && r.reached_steady_state);
@@ -408,15 +408,15 @@ TEST(FemDcb, KluAndUmfpackGiveTheSameRCurve) {
     EXPECT_NEAR(r.rcurve[i].R_J, k.rcurve[i].R_J, 1e-8 * k.rcurve[i].R_J) << "i = " << i;
     largest = std::max(largest, std::abs(r.rcurve[i].R_J / k.rcurve[i].R_J - 1));
   }
-  std::cout << "  largest relative R_J difference klu - umfpack: " << largest << "\n";
+  std::cout << "  largest relative R_J difference klu - mumps: " << largest << "\n";
   auto mentions = [](const law::SimulationResult& res, const std::string& what) {
     for (const auto& n : res.method)
       if (n.find(what) != std::string::npos)
         return true;
     return false;
   };
-  EXPECT_TRUE(mentions(k, "Trilinos Amesos KLU direct solver"));
-  EXPECT_TRUE(mentions(r, "UMFPACK direct solver"));
+  EXPECT_TRUE(mentions(k, "Trilinos Amesos KLU"));
+  EXPECT_TRUE(mentions(r, "Trilinos Amesos MUMPS"));
 }
 
 // KINSOL solves the same equations (same residual, Jacobian and linear solves) to the same
@@ -466,11 +466,13 @@ TEST(FemParameters, SolverChoices) {
   p.parse_parameters(prm);
   EXPECT_EQ(p.linear_solver, fem::FemParameters::LinearSolver::klu);
   EXPECT_EQ(p.nonlinear_solver, fem::FemParameters::NonlinearSolver::newton);
+  // umfpack: a deprecated alias of klu (issue 14), noted.
   prm.parse_input_from_string("set Linear solver = umfpack\nset Nonlinear solver = kinsol\n");
   p.parse_parameters(prm);
-  EXPECT_EQ(p.linear_solver, fem::FemParameters::LinearSolver::umfpack);
+  EXPECT_EQ(p.linear_solver, fem::FemParameters::LinearSolver::klu);
+  EXPECT_EQ(p.deprecation_notes.size(), 1u);
   EXPECT_EQ(p.nonlinear_solver, fem::FemParameters::NonlinearSolver::kinsol);
-  // mumps and cg_amg are the distributed engine's solvers (issue 6); anything else is rejected.
+  // mumps and cg_amg (issue 6); anything else is rejected by the pattern.
   prm.parse_input_from_string("set Linear solver = mumps\n");
   p.parse_parameters(prm);
   EXPECT_EQ(p.linear_solver, fem::FemParameters::LinearSolver::mumps);

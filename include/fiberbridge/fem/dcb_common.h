@@ -1,9 +1,7 @@
 #pragma once
-// Pieces of the DCB finite-element model shared by the serial engine (dcb_simulation.cc) and the
-// MPI-distributed engine (distributed_dcb.templates.h): the orthotropic stiffness, the insertable
-// law (law::ElasticRiseLaw for rigid laws), the mesh lines, the steady-state check, the J-integral
-// weight, the stress output and number formatting. Keeping one
-// copy is what makes "the distributed engine solves the same discrete problem" checkable.
+// Pieces of the DCB finite-element model (distributed_dcb.templates.h) that need no mesh: the
+// orthotropic stiffness, the insertable law (law::ElasticRiseLaw for rigid laws), the mesh
+// lines, the steady-state check, the J-integral weight, the stress output and number formatting.
 #include "fiberbridge/fem/dcb_simulation.h"
 #include "fiberbridge/law/elastic_rise_law.h"
 #include "fiberbridge/law/specimen.h"

@@ -37,15 +37,13 @@ struct FemParameters {
   double tip_tolerance = 1e-3;           ///< |J_tip/J_tip,c - 1| accepted at an advance
   double newton_tolerance = 1e-9;        ///< residual relative to the load-line reaction
   unsigned int max_newton_iterations = 25;
-  /// Sparse direct solver of the condensed Jacobian systems. Both factorize once per Jacobian
-  /// and reuse the factorization for every solve with it (Newton steps, Woodbury vectors).
-  /// KLU is the faster here: seed PVA run, Q1 2 mm, 3.1 s against 4.3 s (its solves are 3x
-  /// cheaper than UMFPACK's, which refine iteratively).
+  /// Solver of the condensed Jacobian systems. The direct solvers factorize once per release
+  /// and take the interface points that change branch in between as a low-rank (Woodbury)
+  /// update (FEM/Linear solver = umfpack is a deprecated alias of klu).
   enum class LinearSolver {
-    klu,     ///< Trilinos Amesos KLU (needs MPI initialized, as the fiberbridge program does)
-    umfpack, ///< deal.II's SparseDirectUMFPACK (serial engine only)
-    mumps,   ///< Trilinos Amesos MUMPS, distributed (distributed engine only)
-    cg_amg   ///< CG + Trilinos ML AMG on an SPD (secant) Jacobian (distributed engine only)
+    klu,   ///< Trilinos Amesos KLU (on several ranks the matrix is gathered on one)
+    mumps, ///< Trilinos Amesos MUMPS, distributed
+    cg_amg ///< CG + Trilinos ML AMG on an SPD (secant) Jacobian
   };
   LinearSolver linear_solver = LinearSolver::klu;
   /// Nonlinear solver of one equilibrium. Both use the exact Jacobian, a line search and the
@@ -69,15 +67,13 @@ struct FemParameters {
   /// Space dimension of the model: 2 (plane stress/strain) or 3 (the specimen extruded over
   /// Specimen/Width, free side faces).
   unsigned int dimension = 2;
-  /// Which engine runs the model. automatic: distributed when dimension = 3, when the program
-  /// runs on more than one MPI rank, or when the linear solver is mumps or cg_amg; else serial
-  /// (the serial engine, with its low-rank updates, is the faster on one core).
-  enum class Engine { automatic, serial, distributed };
-  Engine engine = Engine::automatic;
   /// 3D only: element layers across the width (0: width / element size, rounded, at least 1).
   unsigned int width_elements = 0;
   /// cg_amg only: CG stops at this residual relative to the right-hand side.
   double linear_tolerance = 1e-10;
+
+  /// Notes for the run on deprecated keys met by parse_parameters (FEM/Engine, umfpack).
+  std::vector<std::string> deprecation_notes;
 
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);

@@ -1,9 +1,8 @@
 #pragma once
-// The DCB finite-element model on deal.II's distributed engine (issue 6): the same physics and
-// algorithm as the serial engine (dcb_simulation.h), for 2D and 3D, on
-// parallel::distributed::Triangulation (p4est) with Trilinos MPI matrices and vectors, so that
-// `mpirun -np N fiberbridge run SCENE.prm` spreads the mesh, the assembly and the linear solves
-// over the ranks.
+// The DCB finite-element model (dcb_simulation.h) on any number of MPI ranks, 2D and 3D: one
+// engine on parallel::distributed::Triangulation (p4est) with Trilinos MPI matrices and vectors
+// (issue 14; on one rank it is the serial program), so that `mpirun -np N fiberbridge run
+// SCENE.prm` spreads the mesh, the assembly and the linear solves over the ranks.
 //
 // 3D: the 2D mesh extruded over Specimen/Width (z from 0 to B), free side faces (neither plane
 // stress nor plane strain is imposed: the solid decides), the load applied as a prescribed
@@ -33,9 +32,7 @@ struct DistributedRunInfo {
   double t_setup = 0, t_assemble = 0, t_factorize = 0, t_solve = 0, t_j = 0, t_output = 0;
 };
 
-/// Resolves FEM/Engine: true for the distributed engine. automatic picks it when Dimension = 3,
-/// when `n_ranks` > 1 or when the linear solver is mumps or cg_amg. Throws InputError naming
-/// FEM/Engine when Engine = serial contradicts the run (3D, or more than one rank).
+/// Kept for the app (FEM/Engine is deprecated): there is one engine, so always true.
 bool use_distributed_engine(const FemParameters& parameters, unsigned n_ranks);
 
 /// Runs the model of simulate_dcb() on the ranks of `comm` (every rank calls it and gets the
@@ -47,6 +44,6 @@ simulate_dcb_distributed(const law::Specimen& specimen, const law::Material& mat
                          const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
                          const std::string& output_dir,
                          const std::function<void(const std::string&)>& progress, MPI_Comm comm,
-                         DistributedRunInfo* info = nullptr);
+                         DistributedRunInfo* info = nullptr, FemRunDetails* details = nullptr);
 
 } // namespace fiberbridge::fem
