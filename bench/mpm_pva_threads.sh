@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Benchmark harness: the MPM R curve of the seed PVA control scene (prm/mpm_pva_control.prm, MPM
-# only) at one cell size, with 1 and 2 threads of the particle loops (MPM/Threads; the 2-thread
-# run sets GOMP_SPINCOUNT=10000, see source/mpm/CMakeLists.txt). Prints the model's wall time
+# only) at one cell size, with 1 and 2 threads of the particle loops (MPM/Threads; the MPM's own
+# work team, source/mpm/work_team.cc). Prints the model's wall time
 # (without process start-up), particle-steps per second, G_ss and its error against
 # J_tip + law area (1082.15 J/m^2 for this law), and the user CPU time of the process (on a
 # shared machine the CPU time is the steadier number).
@@ -15,9 +15,7 @@ trap 'rm -rf "$work"' EXIT
 printf "%-8s %8s %10s %12s %12s %10s %10s\n" threads cell_mm wall_s psteps_per_s G_ss_J_m2 G_ss_err cpu_user_s
 for threads in 1 2; do
   out="$work/t$threads"
-  env_spin=""
-  [ "$threads" -gt 1 ] && env_spin="GOMP_SPINCOUNT=10000"
-  env $env_spin /usr/bin/time -f "%U" -o "$out.cpu" "$build/fiberbridge" run \
+  /usr/bin/time -f "%U" -o "$out.cpu" "$build/fiberbridge" run \
     "$root/prm/mpm_pva_control.prm" --set "Output directory=$out" --set "Run=mpm" \
     --set "MPM/Cell size=$cell" --set "MPM/Threads=$threads" --set "MPM/VTU every advances=0" \
     > "$out.log" 2>&1

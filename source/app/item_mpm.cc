@@ -58,10 +58,9 @@ void declare_mpm_section(dealii::ParameterHandler& prm) {
   prm.declare_entry("Maximum steps", std::to_string(d.max_steps), Integer(1),
                     "Safety bound on the number of explicit time steps.");
   prm.declare_entry("Threads", std::to_string(d.threads), Integer(1, 256),
-                    "Threads of the particle loops (OpenMP build only; results are identical). "
-                    "Pays only on otherwise idle cores: with other processes on the cores, "
-                    "libgomp's default spin-wait made 2 threads slower than 1; set "
-                    "GOMP_SPINCOUNT=10000 in the environment when using more than one.");
+                    "Threads of the particle loops (the MPM's own work team; results are "
+                    "identical for any count). Idle helpers sleep instead of spinning, and the "
+                    "solver falls back to one thread when the second does not pay (busy cores).");
   prm.declare_entry("VTU every advances", std::to_string(d.vtu_every_advances), Integer(0),
                     "Write particles (displacement, velocity, stress) every this many tip "
                     "advances to mpm_particles_NNNN.vtu and mpm_particles.pvd (0 = none).");
