@@ -4,6 +4,7 @@
 #include "fiberbridge/beam/arm_on_foundation.h"
 #include "fiberbridge/beam/elastica.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/numerical_fault.h"
 
@@ -47,13 +48,6 @@ void BeamParameters::validate(const std::string& c) const {
 }
 
 namespace {
-
-std::string fmt(double v, int precision = 4) {
-  std::ostringstream s;
-  s.precision(precision);
-  s << v;
-  return s.str();
-}
 
 /// Exact two-node Timoshenko element (cubic deflection, quadratic rotation: exact for an unloaded
 /// span), dofs (w1, theta1, w2, theta2), Phi = 12 EI/(S l^2).

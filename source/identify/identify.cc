@@ -1,6 +1,7 @@
 #include "fiberbridge/identify/identify.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/identify/covariance.h"
 
@@ -19,13 +20,6 @@ using units::kPa;
 using units::mm;
 
 namespace {
-
-std::string fmt(double v, int precision = 4) {
-  std::ostringstream s;
-  s.precision(precision);
-  s << v;
-  return s.str();
-}
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();

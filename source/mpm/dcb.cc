@@ -1,6 +1,7 @@
 #include "fiberbridge/mpm/dcb.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/numerical_fault.h"
 #include "fiberbridge/mpm/crack.h"
@@ -26,13 +27,6 @@ double arm_vibration_period(const law::Specimen& s, const law::Material& m, doub
 namespace {
 
 using units::mm;
-
-std::string fmt(double v, int precision = 4) {
-  std::ostringstream s;
-  s.precision(precision);
-  s << v;
-  return s.str();
-}
 
 } // namespace
 
