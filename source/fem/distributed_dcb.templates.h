@@ -83,10 +83,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <set>
@@ -1048,10 +1048,11 @@ double DistributedDcbModel<dim>::reaction_norm(const Vec& r_full) const {
 
 template <int dim>
 double DistributedDcbModel<dim>::roundoff_floor(const Vec& u) const {
-  // The round-off of r = K u + f_interface: each row sums terms up to |K|_row |u|, so its error
-  // is a few machine epsilons of that; 1e3 epsilons of the largest row sum times the largest
-  // displacement, over sqrt(n) rows, bounds it from above (the beam model's Newton uses the same
-  // 1e3-epsilon floor of its largest row terms, source/beam/dcb_beam.cc).
+  // Estimate of the round-off in r = K u: each row sums terms up to |K|_row |u|, so its error is
+  // a few machine epsilons of that; 1e3 epsilons of the largest row sum times the largest
+  // displacement, times sqrt(n) for the l2 norm over n rows, is a generous estimate (the same
+  // 1e3-epsilon idea as the beam model's Newton, source/beam/dcb_beam.cc). Interface and contact
+  // forces are not in K and not in this estimate. Called only where Newton would otherwise fail.
   const double eps = std::numeric_limits<double>::epsilon();
   return 1e3 * eps * bulk_.linfty_norm() * u.linfty_norm() *
          std::sqrt(double(dof_handler_.n_dofs()));
@@ -1109,7 +1110,7 @@ bool DistributedDcbModel<dim>::newton(double opening, std::string& diagnosis) {
     ref = best_ref;
     nrm = norm(r);
   }
-  if (nrm <= roundoff_floor(u_))
+  if (nrm <= roundoff_floor(u_)) // the iteration limit reached at round-off: also equilibrium
     return true;
   diagnosis = "no convergence in " + std::to_string(prm_.max_newton_iterations) +
               " Newton iterations (residual " + fmt(nrm / ref) + " of the reaction, tolerance " +
