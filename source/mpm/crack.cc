@@ -1,5 +1,6 @@
 #include "fiberbridge/mpm/crack.h"
 
+#include "fiberbridge/core/binary_archive.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/mpm/shape_function.h"
 
@@ -154,6 +155,26 @@ double Crack::max_plane_offset() const {
   for (const CrackParticle& c : particles_)
     m = std::max(m, std::fabs(0.5 * (c.uy[above] + c.uy[below])));
   return m;
+}
+
+void Crack::save_state(BinaryWriter& out) const {
+  out.put(particles_);
+  out.put(segments_);
+  out.put(traction_work_);
+}
+
+void Crack::load_state(BinaryReader& in) {
+  std::vector<CrackParticle> particles;
+  std::vector<CrackSegment> segments;
+  in.get(particles);
+  in.get(segments);
+  if (particles.empty() || segments.size() + 1 != particles.size())
+    throw InputError(in.source() + ": the crack holds " + std::to_string(particles.size()) +
+                     " crack particles and " + std::to_string(segments.size()) +
+                     " segments (expected one segment fewer than particles)");
+  particles_ = std::move(particles);
+  segments_ = std::move(segments);
+  in.get(traction_work_);
 }
 
 } // namespace fiberbridge::mpm

@@ -2,8 +2,10 @@
 
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
+#include "fiberbridge/core/output_guard.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/numerical_fault.h"
+#include "fiberbridge/mpm/checkpoint.h"
 #include "fiberbridge/mpm/crack.h"
 #include "fiberbridge/mpm/explicit_solver.h"
 #include "fiberbridge/mpm/j_integral.h"
@@ -13,6 +15,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <sstream>
 
@@ -312,11 +315,29 @@ const Crack& DcbModel::crack() const {
 }
 
 law::SimulationResult DcbModel::run() {
-  const auto wall0 = std::chrono::steady_clock::now();
+  session_start_ = std::chrono::steady_clock::now();
+  running_ = true;
+  // Checkpoints (mpm/checkpoint.h): continue from one when asked to; a fresh run removes a
+  // stale one so that a later --resume cannot pick up another run's state.
+  bool resumed = resumed_;
+  if (!resumed && prm_.resume)
+    resumed = resume_from_checkpoint();
+  else if (!resumed && !out_dir_.empty() && output_enabled()) {
+    std::error_code ec;
+    std::filesystem::remove(checkpoint_path(out_dir_), ec);
+  }
   const ExplicitSolver& s = *solver_;
-  if (vtu_)
+  if (vtu_ && !resumed)
     vtu_->write(s);
+  const bool checkpoints = !out_dir_.empty() && prm_.checkpoint_interval > 0 && output_enabled();
+  auto last_checkpoint = std::chrono::steady_clock::now();
   while (step(true)) {
+    if (checkpoints &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint).count() >=
+            prm_.checkpoint_interval) {
+      write_checkpoint();
+      last_checkpoint = std::chrono::steady_clock::now();
+    }
   }
   if (vtu_ && (rcurve_.empty() || rcurve_.size() % prm_.vtu_every_advances != 0))
     vtu_->write(s);
@@ -329,7 +350,9 @@ law::SimulationResult DcbModel::run() {
   r.notes.push_back("stopped: " + stop_reason_ + " after " + std::to_string(s.steps()) +
                     " steps, " + fmt(s.time() * 1e3) + " ms");
   finish(r);
-  r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  // Every session's wall time: a resumed run reports what the whole run cost.
+  r.wall_time_s = earlier_wall_seconds_ + session_seconds();
+  running_ = false;
   const double* ph = s.phase_seconds();
   const double other = r.wall_time_s - ph[0] - ph[1] - ph[2];
   auto pct = [&](double t) { return fmt(100 * t / r.wall_time_s, 3) + " %"; };

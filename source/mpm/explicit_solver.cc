@@ -1,5 +1,6 @@
 #include "fiberbridge/mpm/explicit_solver.h"
 
+#include "fiberbridge/core/binary_archive.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/mpm/shape_function.h"
 
@@ -446,6 +447,58 @@ void ExplicitSolver::material_displacement(double x, double y, double& ux, doubl
     }
   ux = sum > 0 ? sx / sum : 0;
   uy = sum > 0 ? sy / sum : 0;
+}
+
+void ExplicitSolver::save_state(BinaryWriter& out) const {
+  const Particles& P = particles_;
+  out.put(static_cast<std::uint64_t>(P.size()));
+  for (const auto* v : {&P.X, &P.Y, &P.x, &P.y, &P.vx, &P.vy, &P.mass, &P.volume})
+    out.put(*v);
+  out.put(P.F);
+  out.put(P.strain);
+  out.put(P.stress);
+  out.put(time_);
+  out.put(steps_);
+  out.put(external_work_);
+  out.put(damping_loss_);
+  out.put(numerical_loss_);
+  // Statistics (the performance note): carried on so that a resumed run reports the whole run.
+  out.put(parallel_steps_);
+  out.put(phase_seconds_);
+  out.put(probe_time_);
+  out.put(team_->parallel());
+}
+
+void ExplicitSolver::load_state(BinaryReader& in) {
+  Particles& P = particles_;
+  const auto n = in.get<std::uint64_t>();
+  if (n != P.size())
+    throw InputError(in.source() + ": the checkpoint holds " + std::to_string(n) +
+                     " particles, the scene's body " + std::to_string(P.size()));
+  for (auto* v : {&P.X, &P.Y, &P.x, &P.y, &P.vx, &P.vy, &P.mass, &P.volume}) {
+    in.get(*v);
+    if (v->size() != n)
+      throw InputError(in.source() + ": a particle array has " + std::to_string(v->size()) +
+                       " entries instead of " + std::to_string(n));
+  }
+  in.get(P.F);
+  in.get(P.strain);
+  in.get(P.stress);
+  if (P.F.size() != n || P.strain.size() != n || P.stress.size() != n)
+    throw InputError(in.source() + ": a particle tensor array does not hold " + std::to_string(n) +
+                     " entries");
+  in.get(time_);
+  in.get(steps_);
+  in.get(external_work_);
+  in.get(damping_loss_);
+  in.get(numerical_loss_);
+  in.get(parallel_steps_);
+  in.get(phase_seconds_);
+  in.get(probe_time_);
+  team_->set_parallel(in.get<bool>());
+  // The weights of the next step: the same arithmetic as at the end of the saved step.
+  weights_current_ = false;
+  off_grid_ = -1;
 }
 
 } // namespace fiberbridge::mpm

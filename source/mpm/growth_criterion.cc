@@ -1,5 +1,7 @@
 #include "fiberbridge/mpm/growth_criterion.h"
 
+#include "fiberbridge/core/binary_archive.h"
+#include "fiberbridge/core/error.h"
 #include "fiberbridge/mpm/dcb.h"
 
 #include <algorithm>
@@ -53,6 +55,23 @@ bool GrowthCriterion::advance_due(double j, double& mean) {
     return false;
   window_.clear();
   return true;
+}
+
+void GrowthCriterion::save_state(BinaryWriter& out) const {
+  out.put(static_cast<std::uint64_t>(length_));
+  out.put(window_);
+  out.put(shortened_);
+}
+
+void GrowthCriterion::load_state(BinaryReader& in) {
+  const auto length = in.get<std::uint64_t>();
+  in.get(window_);
+  in.get(shortened_);
+  if (length < 1 || window_.size() > length)
+    throw InputError(in.source() + ": the growth criterion's J window holds " +
+                     std::to_string(window_.size()) + " of " + std::to_string(length) +
+                     " evaluations");
+  length_ = static_cast<std::size_t>(length);
 }
 
 } // namespace fiberbridge::mpm

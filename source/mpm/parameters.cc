@@ -36,6 +36,8 @@ void MpmParameters::validate() const {
   require(max_steps > 0, "Maximum steps", "must be positive");
   require(threads >= 1 && threads <= 256, "Threads", "must lie in [1, 256]");
   require(vtu_every_advances >= 0, "VTU every advances", "must be >= 0");
+  require(checkpoint_interval >= 0 && std::isfinite(checkpoint_interval), "Checkpoint interval",
+          "must be >= 0 seconds (0 = no checkpoints)");
 }
 
 } // namespace fiberbridge::mpm

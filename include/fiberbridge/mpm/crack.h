@@ -12,6 +12,11 @@
 
 #include <vector>
 
+namespace fiberbridge {
+class BinaryWriter;
+class BinaryReader;
+} // namespace fiberbridge
+
 namespace fiberbridge::mpm {
 
 struct CrackParticle {
@@ -103,6 +108,11 @@ public:
   double traction_work() const { return traction_work_; }
   /// Largest |mean surface y| over the crack [m] (symmetry diagnosis).
   double max_plane_offset() const;
+
+  /// Crack particles, segments with their history, and the traction work, bit for bit
+  /// (checkpoints, mpm/checkpoint.h).
+  void save_state(BinaryWriter& out) const;
+  void load_state(BinaryReader& in);
 
 private:
   std::vector<CrackParticle> particles_;

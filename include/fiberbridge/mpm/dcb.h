@@ -12,9 +12,11 @@
 #include "fiberbridge/mpm/parameters.h"
 #include "fiberbridge/mpm/vtu_writer.h"
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fiberbridge::mpm {
@@ -48,6 +50,18 @@ public:
   const ExplicitSolver& solver() const;
   const Crack& crack() const;
   const std::string& stop_reason() const { return stop_reason_; }
+
+  /// Checkpoints (mpm/checkpoint.h, docs/design.md section 5): writes the whole state that
+  /// carries from one step to the next to checkpoint_path(output_dir) atomically. run() calls it
+  /// every MpmParameters::checkpoint_interval seconds; tests call it between steps.
+  void write_checkpoint() const;
+  /// Continues from the checkpoint in the output directory, if there is one: true when the state
+  /// was restored. Throws InputError naming the file when it cannot be used, and naming the
+  /// input (e.g. "MPM/Cell size") when the checkpoint was written for other inputs. run() calls
+  /// it at its start when MpmParameters::resume is set.
+  bool resume_from_checkpoint();
+  /// The inputs the result depends on, as (scene key, value) pairs; a checkpoint is tied to them.
+  std::vector<std::pair<std::string, std::string>> inputs() const;
 
 private:
   void choose_law();
@@ -84,6 +98,13 @@ private:
   double opening_ = 0, load_ = 0;
   std::vector<law::RCurvePoint> rcurve_;
   double max_kinetic_ratio_ = 0;
+
+  bool resumed_ = false;            ///< the state came from a checkpoint
+  double earlier_wall_seconds_ = 0; ///< wall time of the sessions before the checkpoint [s]
+  /// Wall time of this session so far [s] (0 outside run()).
+  double session_seconds() const;
+  bool running_ = false;
+  std::chrono::steady_clock::time_point session_start_;
 };
 
 /// Runs the specimen until the ligament ends (or steady growth as set in `params`). One

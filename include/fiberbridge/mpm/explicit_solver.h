@@ -10,6 +10,11 @@
 #include "fiberbridge/mpm/particles.h"
 #include "fiberbridge/mpm/work_team.h"
 
+namespace fiberbridge {
+class BinaryWriter;
+class BinaryReader;
+} // namespace fiberbridge
+
 #include <memory>
 #include <vector>
 
@@ -84,6 +89,14 @@ public:
   /// Displacement interpolated from the particles of the field the point belongs to (used to
   /// place a new crack tip on the material).
   void material_displacement(double x, double y, double& ux, double& uy) const;
+
+  /// The state that carries from one step to the next (particles, time, step count, energy
+  /// ledger, timing statistics), bit for bit, for checkpoints (mpm/checkpoint.h). The grid is
+  /// not part of it: every step rebuilds it from the particles. load_state() needs a solver built
+  /// for the same body (InputError naming the checkpoint otherwise); the shape weights are then
+  /// recomputed with the same arithmetic, so the next step is the one the saved run would take.
+  void save_state(BinaryWriter& out) const;
+  void load_state(BinaryReader& in);
 
 private:
   void particles_to_grid();

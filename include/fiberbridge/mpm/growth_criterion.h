@@ -8,6 +8,11 @@
 #include <cstddef>
 #include <deque>
 
+namespace fiberbridge {
+class BinaryWriter;
+class BinaryReader;
+} // namespace fiberbridge
+
 namespace fiberbridge::mpm {
 
 class GrowthCriterion {
@@ -30,6 +35,11 @@ public:
   /// Did an advance at window-mean J lag the loading?
   bool lagged(double j) const { return j > lag_tolerance * j_tip_; }
   int shortened_windows() const { return shortened_; }
+
+  /// The window (length and the evaluations in it) and the count of shortened windows
+  /// (checkpoints, mpm/checkpoint.h).
+  void save_state(BinaryWriter& out) const;
+  void load_state(BinaryReader& in);
 
 private:
   law::Specimen spec_;

@@ -54,6 +54,15 @@ struct MpmParameters {
   /// Write a particle VTU every this many tip advances (0 = none).
   int vtu_every_advances = 20;
 
+  // Run control (no effect on the result): checkpoints that `fiberbridge run --resume` continues
+  // from (mpm/checkpoint.h).
+  /// Wall time between checkpoints of the whole state into the output directory [s]; 0 = none.
+  /// A checkpoint of the 2.5 mm seed DCB is a few MB and takes milliseconds to write.
+  double checkpoint_interval = 60;
+  /// Continue from the output directory's checkpoint when there is one (else start afresh);
+  /// without it a run removes any checkpoint it finds there.
+  bool resume = false;
+
   /// Throws InputError naming the "MPM/<entry>" that is out of range.
   void validate() const;
 };

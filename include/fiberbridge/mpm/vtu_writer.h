@@ -16,6 +16,9 @@ public:
   /// Writes the particles (current positions; displacement, velocity, stress, strain energy
   /// density) and rewrites the .pvd so that it is complete after every call.
   void write(const ExplicitSolver& solver);
+  /// The files written so far with their times: a resumed run continues the .pvd with them.
+  const std::vector<std::pair<double, std::string>>& written() const { return written_; }
+  void set_written(std::vector<std::pair<double, std::string>> w) { written_ = std::move(w); }
 
 private:
   std::string directory_, base_;
