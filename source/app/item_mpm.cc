@@ -64,6 +64,10 @@ void declare_mpm_section(dealii::ParameterHandler& prm) {
   prm.declare_entry("VTU every advances", std::to_string(d.vtu_every_advances), Integer(0),
                     "Write particles (displacement, velocity, stress) every this many tip "
                     "advances to mpm_particles_NNNN.vtu and mpm_particles.pvd (0 = none).");
+  prm.declare_entry("Checkpoint interval", std::to_string(d.checkpoint_interval), Double(0),
+                    "Wall time in seconds between checkpoints of the whole model state into "
+                    "resume/mpm_state.bin of the output directory, which `fiberbridge run SCENE "
+                    "--resume` continues from (0 = none).");
   prm.leave_subsection();
 }
 
@@ -86,6 +90,7 @@ mpm::MpmParameters parse_mpm_section(dealii::ParameterHandler& prm) {
   p.max_steps = prm.get_integer("Maximum steps");
   p.threads = prm.get_integer("Threads");
   p.vtu_every_advances = prm.get_integer("VTU every advances");
+  p.checkpoint_interval = prm.get_double("Checkpoint interval");
   prm.leave_subsection();
   p.validate();
   return p;
@@ -93,7 +98,8 @@ mpm::MpmParameters parse_mpm_section(dealii::ParameterHandler& prm) {
 } // namespace
 
 void run_mpm_item(SceneContext& ctx) {
-  const mpm::MpmParameters params = parse_mpm_section(*ctx.prm);
+  mpm::MpmParameters params = parse_mpm_section(*ctx.prm);
+  params.resume = ctx.resume;
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
   law::SimulationResult result = mpm::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(),
                                                    ctx.j_tip(), params, ctx.output_dir, progress);

@@ -5,6 +5,7 @@
 // tables are the same as on one rank.
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/result_codec.h"
+#include "fiberbridge/app/resume_store.h"
 #include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
@@ -114,6 +115,7 @@ law::SimulationResult run_model(SceneContext& parent, const std::string& model,
   sub.prm = parent.prm;
   sub.scene_file = parent.scene_file;
   sub.output_dir = dir;
+  sub.resume = parent.resume;
   if (use_fitted_law) {
     sub.fitted_law = parent.fitted_law;
     sub.fitted_j_tip = parent.fitted_j_tip;
@@ -331,13 +333,20 @@ void run_study_item(SceneContext& ctx) {
   // gathered results below, written by rank 0 alone. Cost estimates only order the hand-out:
   // levels are listed coarse to fine and a 2D level about quadruples the work of the previous
   // one; a stability case counts as one coarsest level.
+  //
+  // Each run is a unit of work that --resume restores once finished (resume_store.h): its result
+  // is kept in resume/ as it finishes, tied to the scene's parameters and the law in effect.
+  const Fingerprint inputs = simulation_fingerprint(ctx);
   std::vector<std::function<std::string()>> tasks;
   std::vector<double> cost;
   for (const auto& ladder : ladders)
     for (std::size_t l = 0; l < ladder.levels; ++l) {
-      tasks.push_back([&ctx, &ladder, l] {
+      tasks.push_back([&ctx, &ladder, l, &inputs] {
         TaskOwnsItsFiles own;
-        return json_to_bytes(result_to_json(run_ladder_level(ctx, ladder, l)));
+        const std::string run = ladder.model + "_level" + std::to_string(l);
+        return run_or_restore(
+            ctx.output_dir, ctx.resume, "study_" + run, inputs, ctx.out("study/" + run),
+            [&] { return json_to_bytes(result_to_json(run_ladder_level(ctx, ladder, l))); });
       });
       cost.push_back(std::pow(4.0, double(l)));
     }
@@ -348,9 +357,12 @@ void run_study_item(SceneContext& ctx) {
       if (c.only_model.empty() || c.only_model == model)
         case_runs.push_back({&c, model});
   for (const auto& [c, model] : case_runs) {
-    tasks.push_back([&ctx, c = c, model = model, plateau_tol] {
+    tasks.push_back([&ctx, c = c, model = model, plateau_tol, &inputs] {
       TaskOwnsItsFiles own;
-      return json_to_bytes(run_stability_case(ctx, *c, model, plateau_tol));
+      const std::string run = "stability_" + c->name + "_" + model;
+      return run_or_restore(
+          ctx.output_dir, ctx.resume, "study_" + run, inputs, ctx.out("study/" + run),
+          [&] { return json_to_bytes(run_stability_case(ctx, *c, model, plateau_tol)); });
     });
     cost.push_back(1.0);
   }

@@ -27,7 +27,8 @@ namespace {
 const char* usage = R"(fiberbridge: fiber-bridging cohesive laws from R curves, and DCB simulations.
 
 Usage:
-  fiberbridge run SCENE.prm [--set "Section/Key=value"]...   run a .prm scene
+  fiberbridge run SCENE.prm [--set "Section/Key=value"]... [--resume]   run a .prm scene
+                                        (--resume: continue a killed run into the same directory)
   fiberbridge extract DATA.csv [--delta-c MM|auto] [--j-tip J_M2|auto] [--out DIR]
                                         R(delta) -> Eq. 6 law, R' law, trilinear fit
   fiberbridge rank TABLE.csv [--out DIR]  degradation statistics and durability ranking
@@ -93,7 +94,10 @@ int cmd_run(const std::vector<std::string>& args) {
   po::options_description d("fiberbridge run SCENE.prm [options]");
   d.add_options()("scene", po::value<std::string>()->required(),
                   "scene file (.prm)")("set", po::value<std::vector<std::string>>()->composing(),
-                                       "override \"Section/Key=value\" (repeatable)");
+                                       "override \"Section/Key=value\" (repeatable)")(
+      "resume", po::bool_switch(),
+      "continue a run that was killed: restore the work it finished (simulations, study runs, "
+      "identify fits; kept in OUTPUT/resume/) and continue the MPM from its checkpoint");
   po::positional_options_description p;
   p.add("scene", 1);
   po::variables_map vm;
@@ -102,7 +106,7 @@ int cmd_run(const std::vector<std::string>& args) {
   std::vector<std::string> sets;
   if (vm.count("set"))
     sets = vm["set"].as<std::vector<std::string>>();
-  const auto out = app::run_scene(vm["scene"].as<std::string>(), sets);
+  const auto out = app::run_scene(vm["scene"].as<std::string>(), sets, vm["resume"].as<bool>());
   if (output_enabled())
     std::cout << "results in " << out << " (summary.json)\n";
   return 0;

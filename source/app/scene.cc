@@ -2,6 +2,7 @@
 
 #include "fiberbridge/app/analysis_steps.h"
 #include "fiberbridge/app/items.h"
+#include "fiberbridge/app/resume_store.h"
 #include "fiberbridge/app/simulation_tasks.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
@@ -191,7 +192,8 @@ std::vector<std::string> read_scene(dealii::ParameterHandler& prm, const std::st
   return wanted;
 }
 
-std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides) {
+std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides,
+                      bool resume) {
   const auto t0 = std::chrono::steady_clock::now();
   dealii::ParameterHandler prm;
   const auto wanted = read_scene(prm, prm_file, overrides);
@@ -204,12 +206,18 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
   // Under mpirun only rank 0 writes (core/output_guard.h); the others must not remove the
   // summary rank 0 is about to write either.
   const bool writer = output_enabled();
+  ctx.resume = resume;
   ensure_directory(ctx.output_dir);
   if (writer)
     remove_stale_summary(ctx.output_dir);
+  // A fresh run must not later resume into an earlier run's records and checkpoints.
+  if (!resume)
+    clear_resume_state(ctx.output_dir);
   ctx.summary["scene"] = prm_file;
   ctx.summary["run"] = wanted;
   ctx.summary["plots"] = Json::array();
+  if (resume)
+    ctx.summary["resumed"] = true;
   for (const auto& item : scene_items()) {
     // Under mpirun the scene's simulations may run as tasks across the ranks (simulation_tasks.h).
     if (!wanted_set.count(item.name) || ran_as_simulation_task(ctx, item.name, wanted_set))
@@ -217,7 +225,11 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
     if (writer)
       std::cerr << "fiberbridge: running " << item.name << "\n";
     const auto ti = std::chrono::steady_clock::now();
-    item.run(ctx);
+    // A simulation is a unit of work that --resume restores once finished (resume_store.h).
+    if (is_simulation_item(item.name))
+      run_or_restore_simulation_item(ctx, item);
+    else
+      item.run(ctx);
     ctx.summary["item_wall_time_s"][item.name] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - ti).count();
   }

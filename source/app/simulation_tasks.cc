@@ -1,6 +1,7 @@
 #include "fiberbridge/app/simulation_tasks.h"
 
 #include "fiberbridge/app/result_codec.h"
+#include "fiberbridge/app/resume_store.h"
 #include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/core/output_guard.h"
 
@@ -57,7 +58,7 @@ Json run_simulations(SceneContext& ctx, const std::set<std::string>& wanted, MPI
         sub.results.clear();
         TaskOwnsItsFiles own; // its model's files only: rcurve_<model>.csv, fields, PNG
         const auto t0 = std::chrono::steady_clock::now();
-        item.run(sub);
+        run_or_restore_simulation_item(sub, item);
         const double t =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         return json_to_bytes({{"block", sub.summary[item.name]},

@@ -3,8 +3,11 @@
 // complete result. After every kill the directory must either hold a complete result (summary.json,
 // no incomplete marker, every table identical to an uninterrupted run's) or say that it is
 // incomplete (RUN_INCOMPLETE.txt, no summary.json); no file may be truncated under its real name.
-// A rerun into the same directory must then give the uninterrupted run's tables again.
+// A rerun into the same directory must then give the uninterrupted run's tables again, and a
+// rerun with --resume after kills at random points continues from the MPM's checkpoint and gives
+// them too (issue 15 item 3).
 #include "fiberbridge/core/csv.h"
+#include "fiberbridge/core/summary.h"
 
 #include <gtest/gtest.h>
 
@@ -34,17 +37,31 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-/// Starts `fiberbridge run` on the coarse MPM scene into `out`; returns the child's pid.
-pid_t start_scene(const fs::path& out) {
+/// Starts `fiberbridge run` on the coarse MPM scene into `out` with `extra` arguments, stderr to
+/// `err` (a file; /dev/null by default); returns the child's pid.
+pid_t start_scene(const fs::path& out, const std::vector<std::string>& extra = {},
+                  const std::string& err = "/dev/null") {
   const std::string bin = FIBERBRIDGE_BIN;
   const std::string scene = std::string(FIBERBRIDGE_SOURCE_DIR) + "/prm/mpm_linear_softening.prm";
-  const std::string set_out = "Output directory=" + out.string();
+  std::vector<std::string> args = {bin,
+                                   "run",
+                                   scene,
+                                   "--set",
+                                   "Output directory=" + out.string(),
+                                   "--set",
+                                   "MPM/Cell size=5",
+                                   "--set",
+                                   "MPM/Loading periods=8"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  std::vector<char*> argv;
+  for (auto& a : args)
+    argv.push_back(a.data());
+  argv.push_back(nullptr);
   const pid_t pid = fork();
   if (pid == 0) {
     std::freopen("/dev/null", "w", stdout);
-    std::freopen("/dev/null", "w", stderr);
-    execl(bin.c_str(), bin.c_str(), "run", scene.c_str(), "--set", set_out.c_str(), "--set",
-          "MPM/Cell size=5", "--set", "MPM/Loading periods=8", static_cast<char*>(nullptr));
+    std::freopen(err.c_str(), "w", stderr);
+    execv(bin.c_str(), argv.data());
     _exit(127);
   }
   return pid;
@@ -128,5 +145,69 @@ TEST(OutputOnKill, MpmSceneKilledAtRandomMomentsLeavesCompleteOrMarkedOutput) {
   EXPECT_TRUE(fs::exists(dir / "summary.json"));
   EXPECT_FALSE(fs::exists(dir / marker));
   EXPECT_EQ(tables(dir), reference);
+}
+
+TEST(OutputOnKill, MpmSceneKilledAndResumedGivesTheUninterruptedTables) {
+  const fs::path dir = fs::path(FIBERBRIDGE_WORK_DIR) / "resume_on_kill";
+  fs::remove_all(dir);
+  // Checkpoints every 0.2 s of wall time: several per run, so that kills land between them.
+  const std::vector<std::string> checkpoints = {"--set", "MPM/Checkpoint interval=0.2"};
+  std::vector<std::string> resume = checkpoints;
+  resume.push_back("--resume");
+  const auto t0 = std::chrono::steady_clock::now();
+  ASSERT_EQ(wait_for(start_scene(dir, checkpoints)), 0);
+  const double run_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto reference = tables(dir);
+  ASSERT_FALSE(reference.empty());
+  // A finished run leaves no checkpoint (its record replaces it).
+  const fs::path checkpoint = dir / "resume" / "mpm_state.bin";
+  EXPECT_FALSE(fs::exists(checkpoint));
+  // The MPM loop's share of the run (start-up of the program takes the rest).
+  const double mpm_s = fiberbridge::Json::parse(slurp(dir / "summary.json"))
+                           .at("mpm")
+                           .at("wall_time_s")
+                           .get<double>();
+  ASSERT_GT(mpm_s, 0.5) << "the MPM loop must outlast a few checkpoints";
+
+  const unsigned seed = std::random_device{}();
+  std::mt19937 rng(seed);
+  // A fresh run is killed at a random moment of its MPM loop: after its first checkpoint, within
+  // the first 60 % of the loop. The first --resume is killed too (SIGKILL trial), at 10 % to 60 %
+  // of a run, and a second --resume must continue from whatever checkpoint is there.
+  std::uniform_real_distribution<double> first(0.0, 0.6 * mpm_s);
+  std::uniform_real_distribution<double> second(0.1 * run_s, 0.6 * run_s);
+  const fs::path err = dir.parent_path() / "resume_on_kill_stderr.txt";
+  int resumed_from_checkpoint = 0;
+  for (int sig : {SIGTERM, SIGKILL}) {
+    const std::string what = std::string(sig == SIGTERM ? "SIGTERM" : "SIGKILL") + " trial (seed " +
+                             std::to_string(seed) + ")";
+    pid_t pid = start_scene(dir, checkpoints);
+    int status = 0;
+    while (!fs::exists(checkpoint) && waitpid(pid, &status, WNOHANG) == 0)
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    std::this_thread::sleep_for(std::chrono::duration<double>(first(rng)));
+    kill(pid, sig);
+    wait_for(pid);
+    if (sig == SIGKILL) {
+      pid = start_scene(dir, resume);
+      std::this_thread::sleep_for(std::chrono::duration<double>(second(rng)));
+      kill(pid, sig);
+      wait_for(pid);
+    }
+    // (A kill between keeping the finished item's record and removing its checkpoint leaves
+    // both: the record is restored then.)
+    const bool had_checkpoint = fs::exists(dir / "resume" / "mpm_state.bin") &&
+                                !fs::exists(dir / "resume" / "item_mpm.cbor");
+    ASSERT_EQ(wait_for(start_scene(dir, resume, err.string())), 0) << what << ": " << slurp(err);
+    EXPECT_TRUE(fs::exists(dir / "summary.json")) << what;
+    EXPECT_FALSE(fs::exists(dir / marker)) << what;
+    EXPECT_EQ(tables(dir), reference) << what << ": the resumed run's tables differ";
+    const bool said = slurp(err).find("resumed from the checkpoint") != std::string::npos;
+    EXPECT_EQ(said, had_checkpoint) << what << ": " << slurp(err);
+    resumed_from_checkpoint += said;
+  }
+  // At least one trial must really have continued from a checkpoint (the first kill lands
+  // in the MPM loop, after its first checkpoint).
+  EXPECT_GE(resumed_from_checkpoint, 1) << "run time " << run_s << " s, MPM " << mpm_s << " s";
 }
 #endif

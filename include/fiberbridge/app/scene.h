@@ -17,8 +17,11 @@ namespace fiberbridge::app {
 std::vector<std::string> read_scene(dealii::ParameterHandler& prm, const std::string& prm_file,
                                     const std::vector<std::string>& overrides);
 
-/// Runs the scene; returns the output directory. Throws InputError/ComputationError.
-std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides);
+/// Runs the scene; returns the output directory. Throws InputError/ComputationError. With
+/// `resume`, work an earlier run into the same output directory finished is restored and
+/// checkpoints are continued (resume_store.h); without, that state is removed first.
+std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides,
+                      bool resume = false);
 
 /// Writes the full documented parameter set (every section, defaults) to `out`.
 void print_scene_parameters(std::ostream& out);

@@ -37,6 +37,9 @@ struct SceneContext {
   /// What `extract` found (data curve, steady state, laws), for `fit` and `bridging`.
   std::shared_ptr<const ExtractionOutcome> extraction;
   std::string scene_file; ///< for resolving relative data paths
+  /// `fiberbridge run --resume`: units of work finished by an earlier run into this output
+  /// directory are restored and checkpoints continued (resume_store.h, mpm/checkpoint.h).
+  bool resume = false;
 
   /// What `identify` found; it also sets fitted_law/fitted_j_tip and the effective specimen
   /// (first record's a0) and material (its calibrated E_L) that specimen()/material() return.

@@ -1,0 +1,143 @@
+// `fiberbridge run --resume` at the level of units of work (issue 15 item 3): a study and an
+// identify scene are killed once some of their units (study runs, identify fits) are finished;
+// the resumed run restores those from the records in resume/, runs only the others, and its
+// tables equal an uninterrupted run's (all but the wall-time columns, which measure the runs).
+// A record made with other parameters is refused, naming the key that changed.
+#include "fiberbridge/core/csv.h"
+#include "fiberbridge/core/summary.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Starts the executable with `args`, stdout to /dev/null and stderr to `err`; returns the pid.
+pid_t start(std::vector<std::string> args, const fs::path& err) {
+  args.insert(args.begin(), FIBERBRIDGE_BIN);
+  std::vector<char*> argv;
+  for (auto& a : args)
+    argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen(err.c_str(), "w", stderr);
+    execv(FIBERBRIDGE_BIN, argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+int exit_code(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::size_t records_in(const fs::path& dir) {
+  std::size_t n = 0;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir / "resume", ec))
+    n += e.path().extension() == ".cbor";
+  return n;
+}
+
+/// Starts a run and kills it (SIGKILL) as soon as `at_least` records of finished units exist;
+/// returns how many there were then.
+std::size_t kill_after_records(const std::vector<std::string>& args, const fs::path& dir,
+                               std::size_t at_least) {
+  const pid_t pid = start(args, dir.parent_path() / (dir.filename().string() + "_killed.txt"));
+  int status = 0;
+  while (records_in(dir) < at_least && waitpid(pid, &status, WNOHANG) == 0)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  kill(pid, SIGKILL);
+  waitpid(pid, &status, 0);
+  return records_in(dir);
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1))
+    ++n;
+  return n;
+}
+
+/// The CSV `file` of two directories, column by column as text, except the wall-time columns.
+void expect_same_table(const fs::path& a, const fs::path& b, const std::string& file) {
+  const auto ta = fiberbridge::CsvTable::read((a / file).string());
+  const auto tb = fiberbridge::CsvTable::read((b / file).string());
+  ASSERT_EQ(ta.header(), tb.header()) << file;
+  ASSERT_EQ(ta.n_rows(), tb.n_rows()) << file;
+  for (const auto& col : ta.header())
+    if (col.find("wall_time") == std::string::npos && col != "cpu_s")
+      EXPECT_EQ(ta.text(col), tb.text(col)) << file << ", column " << col;
+}
+
+} // namespace
+
+#ifdef FIBERBRIDGE_HAVE_BEAM
+TEST(Resume, StudyKilledAfterSomeRunsRestoresThemAndRunsTheRest) {
+  const fs::path base = fs::path(FIBERBRIDGE_WORK_DIR) / "resume_study";
+  fs::remove_all(base);
+  fs::create_directories(base);
+  // The beam study: 4 ladder levels and the 8 stability cases the beam runs (12 units, seconds).
+  auto args = [&](const std::string& out) {
+    return std::vector<std::string>{
+        "run",   std::string(FIBERBRIDGE_SOURCE_DIR) + "/prm/study_beam.prm",
+        "--set", "Output directory=" + (base / out).string(),
+        "--set", "Study/Beam ladder=Number of elements = 50, 100, 200, 400"};
+  };
+  ASSERT_EQ(exit_code(start(args("reference"), base / "reference.txt")), 0)
+      << slurp(base / "reference.txt");
+  const fs::path dir = base / "resumed";
+  const std::size_t units = records_in(base / "reference");
+  ASSERT_EQ(units, 12u);
+  const std::size_t kept = kill_after_records(args("resumed"), dir, 3);
+  ASSERT_GE(kept, 3u);
+  ASSERT_LT(kept, units) << "the run finished before the kill; nothing left to resume";
+  EXPECT_TRUE(fs::exists(dir / "RUN_INCOMPLETE.txt"));
+
+  auto resume = args("resumed");
+  resume.push_back("--resume");
+  ASSERT_EQ(exit_code(start(resume, base / "resumed.txt")), 0) << slurp(base / "resumed.txt");
+  const std::string err = slurp(base / "resumed.txt");
+  // Every kept unit restored, every other one run (the study names each run it starts).
+  EXPECT_EQ(count(err, "restored from"), kept) << err;
+  EXPECT_EQ(count(err, "study: "), units - kept) << err;
+  EXPECT_FALSE(fs::exists(dir / "RUN_INCOMPLETE.txt"));
+  for (const char* f : {"study_error_vs_time.csv", "study_beam.csv", "stability.csv"})
+    expect_same_table(base / "reference", dir, f);
+
+  // Another scene into the same directory: the record names the key that changed.
+  auto changed = resume;
+  changed.insert(changed.end(), {"--set", "Cohesive law/Peak stress=4100"});
+  ASSERT_NE(exit_code(start(changed, base / "changed.txt")), 0);
+  EXPECT_NE(slurp(base / "changed.txt").find("Cohesive law/Peak stress was '4000', now '4100'"),
+            std::string::npos)
+      << slurp(base / "changed.txt");
+  // Without --resume the records are removed and everything runs again.
+  ASSERT_EQ(exit_code(start(args("resumed"), base / "fresh.txt")), 0);
+  EXPECT_EQ(count(slurp(base / "fresh.txt"), "restored from"), 0u);
+  EXPECT_EQ(count(slurp(base / "fresh.txt"), "study: "), units);
+}
+
+#endif
