@@ -2,6 +2,7 @@
 // reproduces the records of the Test section (include/fiberbridge/identify/identify.h). The
 // identified law, J_tip and the effective specimen (first record's a0 and calibrated E_L) are
 // handed to the simulations that follow, as `fit` hands its law.
+#include "fiberbridge/app/identify_resume.h"
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/core/csv.h"
@@ -234,8 +235,12 @@ void run_identify_item(SceneContext& ctx) {
   const law::Specimen specimen = ctx.specimen();
   const law::Material quoted = ctx.material();
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
-  auto id = std::make_shared<identify::Identification>(
-      identify::identify_law(records, specimen, quoted, settings, progress));
+  // Each fit is a unit of work that --resume restores once finished (identify_resume.h).
+  const Fingerprint inputs = identify_inputs(ctx, records);
+  auto id =
+      std::make_shared<identify::Identification>(fit_or_restore(ctx, "identify_joint", inputs, [&] {
+        return identify::identify_law(records, specimen, quoted, settings, progress);
+      }));
   Json block = identification_json(*id);
   block["modulus"] = settings.calibrate_modulus
                          ? "E_L calibrated per record from the initial compliance (CBT)"
@@ -243,8 +248,11 @@ void run_identify_item(SceneContext& ctx) {
   block["E_L_quoted_GPa"] = quoted.E_L * 1e-9;
   if (per_record && records.size() > 1) {
     Json each = Json::array();
-    for (const auto& r : records) {
-      const auto one = identify::identify_law({r}, specimen, quoted, settings, progress);
+    for (std::size_t k = 0; k < records.size(); ++k) {
+      const auto& r = records[k];
+      const auto one = fit_or_restore(ctx, "identify_record_" + std::to_string(k + 1), inputs, [&] {
+        return identify::identify_law({r}, specimen, quoted, settings, progress);
+      });
       Json j = identification_json(one);
       j["record"] = r.name;
       each.push_back(j);

@@ -140,4 +140,58 @@ TEST(Resume, StudyKilledAfterSomeRunsRestoresThemAndRunsTheRest) {
   EXPECT_EQ(count(slurp(base / "fresh.txt"), "study: "), units);
 }
 
+TEST(Resume, IdentifyKilledAfterTheJointFitRestoresIt) {
+  const fs::path base = fs::path(FIBERBRIDGE_WORK_DIR) / "resume_identify";
+  fs::remove_all(base);
+  fs::create_directories(base);
+  // Two shared records (the specimen and material of prm/test_records.prm), the joint fit and
+  // one fit per record, few evaluations on a coarse forward model: seconds per fit (the fits'
+  // quality is not what this test is about).
+  const std::string records = std::string(FIBERBRIDGE_SOURCE_DIR) + "/data/dcb_records/";
+  std::ofstream(base / "scene.prm")
+      << "set Run = identify\n"
+         "subsection Specimen\n  set Width = 25\n  set Height = 5.4\n  set Length = 123\nend\n"
+         "subsection Test\n  set Files = "
+      << records << "DCB-05_Toughness.csv, " << records
+      << "DCB-01_Toughness.csv\n"
+         "  set Columns = time_s: Time, opening_mm: Disp, load_N: Force, a_mm: CrackExt\nend\n"
+         "subsection Material\n  set E_L = 19300\n  set E_T = 6110\n  set G_LT = 2288\n"
+         "  set nu_LT = 0.3\nend\n"
+         "subsection Identify\n  set Per record = true\n  set Starts = 1\n"
+         "  set Max evaluations = 10\n  set Tolerance = 1e-2\n  set Number of elements = 40\n"
+         "  set Tip advance = 2\nend\n";
+  auto args = [&](const std::string& out) {
+    return std::vector<std::string>{"run", (base / "scene.prm").string(), "--set",
+                                    "Output directory=" + (base / out).string()};
+  };
+  ASSERT_EQ(exit_code(start(args("reference"), base / "reference.txt")), 0)
+      << slurp(base / "reference.txt");
+  ASSERT_EQ(records_in(base / "reference"), 3u); // the joint fit and two per-record fits
+  const fs::path dir = base / "resumed";
+  const std::size_t kept = kill_after_records(args("resumed"), dir, 1);
+  ASSERT_GE(kept, 1u);
+  ASSERT_LT(kept, 3u) << "the run finished before the kill; nothing left to resume";
+  auto resume = args("resumed");
+  resume.push_back("--resume");
+  ASSERT_EQ(exit_code(start(resume, base / "resumed.txt")), 0) << slurp(base / "resumed.txt");
+  const std::string err = slurp(base / "resumed.txt");
+  EXPECT_EQ(count(err, "restored from"), kept) << err;
+  EXPECT_NE(err.find("identify_joint restored from"), std::string::npos) << err;
+  for (const char* f :
+       {"identify_fit.csv", "identify_law.csv", "identify_fit_0.csv", "identify_fit_1.csv"})
+    expect_same_table(base / "reference", dir, f);
+  // The summary's identify block, per-record fits included, but for the timings.
+  auto block = [](const fs::path& d) {
+    std::ifstream in(d / "summary.json");
+    auto j = fiberbridge::Json::parse(in).at("identify");
+    j.erase("wall_time_s");
+    j.erase("forward_time_s");
+    for (auto& r : j.at("per_record")) {
+      r.erase("wall_time_s");
+      r.erase("forward_time_s");
+    }
+    return j;
+  };
+  EXPECT_EQ(block(dir), block(base / "reference"));
+}
 #endif
