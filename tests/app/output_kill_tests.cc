@@ -188,6 +188,9 @@ TEST(OutputOnKill, MpmSceneKilledAndResumedGivesTheUninterruptedTables) {
     std::this_thread::sleep_for(std::chrono::duration<double>(first(rng)));
     kill(pid, sig);
     wait_for(pid);
+    // The fresh run removed the record of the earlier trial's finished run (a later --resume
+    // must not restore another run's result), and was killed before keeping its own.
+    EXPECT_FALSE(fs::exists(dir / "resume" / "item_mpm.cbor")) << what;
     if (sig == SIGKILL) {
       pid = start_scene(dir, resume);
       std::this_thread::sleep_for(std::chrono::duration<double>(second(rng)));
