@@ -3,9 +3,11 @@
 degrees; for each run the mesh (cells, DoFs), the initiation load against corrected beam theory
 (CBT, the closed form of source/law/specimen.cc), R_J at initiation against J_tip, the largest
 |load/CBT - 1| over the recorded advances, and how the run ended. docs/verification.md,
-"Thin arms (measured before the fix)". Usage: scripts/thin_arm_fem_ladder.py [BUILD_DIR] [--set K=V]...
+"Thin arms". Usage: scripts/thin_arm_fem_ladder.py [BUILD_DIR] [--set K=V]...
+Environment: THIN_LADDER_SIZES (comma-separated element sizes in mm, default 2,1,0.675,0.5,0.25,0.125)
+and THIN_LADDER_DEGREES (default 1,2).
 """
-import csv, json, math, os, subprocess, sys, tempfile
+import csv, json, math, os, re, subprocess, sys, tempfile
 
 build = sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--") else "build"
 extra = [a for a in sys.argv[1:] if a != build]
@@ -22,10 +24,11 @@ def cbt_load(a):
     return math.sqrt(j_tip * B * B * h**3 * E_L / 12) / (a + chi * h)
 
 
-sizes = [2.0, 1.0, 0.675, 0.5, 0.25, 0.125]
+sizes = [float(v) for v in os.environ.get("THIN_LADDER_SIZES", "2,1,0.675,0.5,0.25,0.125").split(",")]
+degrees = [int(v) for v in os.environ.get("THIN_LADDER_DEGREES", "1,2").split(",")]
 print("| degree | element mm | cells | DoFs | load/CBT - 1 at a0 | max abs over growth | R_J/J_tip - 1 at a0 | outcome |")
 print("|---|---|---|---|---|---|---|---|")
-for degree in (1, 2):
+for degree in degrees:
     for size in sizes:
         with tempfile.TemporaryDirectory() as out:
             cmd = [os.path.join(build, "fiberbridge"), "run", scene, "--set", "Run=fem",
@@ -38,9 +41,9 @@ for degree in (1, 2):
             log = p.stdout + p.stderr
             cells = dofs = "?"
             for line in log.splitlines():
-                if line.startswith("fem: ") and " cells, " in line:
-                    w = line.split()
-                    cells, dofs = w[1], w[3]
+                m = re.search(r"(\d+) cells, (\d+) dofs", line)
+                if line.startswith("fem") and m:
+                    cells, dofs = m.group(1), m.group(2)
             rc = os.path.join(out, "rcurve_fem.csv")
             if p.returncode != 0 or not os.path.exists(rc):
                 why = log.strip().splitlines()[-1] if log.strip() else "no output"

@@ -107,10 +107,23 @@ DcbMeshLines dcb_mesh_lines(const law::Specimen& specimen, const FemParameters& 
   else
     m.x.back() = L;
 
-  // Heights: square elements at the crack plane, graded towards the faces, capped.
-  m.y = {0.0};
-  double size = m.dx;
+  // Heights: the first layer at the crack plane is min(dx, h / min_layers), so that every arm
+  // gets at least min_layers layers (an arm thinner than min_layers elements gets uniform layers
+  // of h / min_layers), graded towards the face and capped at h / min_layers. The crack-plane
+  // elements are then dx / y1 = max(1, min_layers dx / h) times longer than high; above
+  // kMaxCrackPlaneAspect the element length is not tied to the arm any more: refused.
   const double cap = h / p.min_layers;
+  double size = std::min(m.dx, cap);
+  m.first_layer = size;
+  if (m.dx > kMaxCrackPlaneAspect * size * (1 + 1e-9))
+    throw InputError(
+        "FEM/Element size: " + fmt(m.dx / units::mm) + " mm elements on arms " +
+        fmt(h / units::mm) +
+        " mm thick with Minimum layers per arm = " + std::to_string(p.min_layers) + " would be " +
+        fmt(m.dx / size, 3) + " times longer than high at the crack plane (bound " +
+        fmt(kMaxCrackPlaneAspect) + "); set FEM/Element size to at most " +
+        fmt(kMaxCrackPlaneAspect * size / units::mm) + " mm or lower FEM/Minimum layers per arm");
+  m.y = {0.0};
   while (m.y.back() + size < h - 1e-12 * h) {
     m.y.push_back(m.y.back() + size);
     size = std::min(size * p.grading, cap);
@@ -121,6 +134,59 @@ DcbMeshLines dcb_mesh_lines(const law::Specimen& specimen, const FemParameters& 
   else
     m.y.push_back(h);
   return m;
+}
+
+double q1_bending_indicator(const law::Material& material, double element_length,
+                            double arm_thickness) {
+  const double r = element_length / arm_thickness;
+  return material.G_LT / material.E_L * r * r;
+}
+
+unsigned resolve_degree(const law::Specimen& specimen, const law::Material& material,
+                        const FemParameters& p, std::vector<std::string>& notes) {
+  const double h = specimen.arm_thickness();
+  const double indicator = q1_bending_indicator(material, p.element_size, h);
+  if (p.degree == 0) {
+    const unsigned degree = indicator > kQ1BendingBound ? 2 : 1;
+    if (degree == 2)
+      notes.push_back("FEM/Polynomial degree = auto chose Q2: Q1 elements " +
+                      fmt(p.element_size / units::mm) + " mm long on arms " + fmt(h / units::mm) +
+                      " mm thick would bend too stiffly (parasitic shear " +
+                      "(G_LT/E_L)(element/arm)^2 = " + fmt(indicator, 3) + " > " +
+                      fmt(kQ1BendingBound) + ")");
+    return degree;
+  }
+  if (p.degree == 1 && indicator > kQ1BendingBound)
+    notes.push_back(
+        "resolution: Q1 elements " + fmt(p.element_size / units::mm) + " mm long on arms " +
+        fmt(h / units::mm) +
+        " mm thick bend too stiffly (parasitic shear (G_LT/E_L)(element/arm)^2 = " +
+        fmt(indicator, 3) + " > " + fmt(kQ1BendingBound) + ", a load about " +
+        fmt(100 * kQ1LoadErrorPerIndicator * indicator, 2) +
+        " % high at fixed J); set FEM/Polynomial degree = auto or 2, or FEM/Element "
+        "size to at most " +
+        fmt(h * std::sqrt(kQ1BendingBound * material.E_L / material.G_LT) / units::mm, 3) + " mm");
+  return p.degree;
+}
+
+double note_small_strain_bound(law::SimulationResult& result) {
+  double worst = 0, worst_a = 0;
+  for (const auto& pt : result.rcurve)
+    if (pt.a > 0 && pt.load_point_opening / pt.a > worst) {
+      worst = pt.load_point_opening / pt.a;
+      worst_a = pt.a;
+    }
+  const double error = kSmallRotationLoadError * worst * worst;
+  if (error > kSmallRotationBound)
+    result.notes.push_back(
+        "small strain: at a = " + fmt(worst_a / units::mm) + " mm the load-point opening is " +
+        fmt(worst, 3) +
+        " of the crack length, where small-rotation kinematics put the load about " +
+        fmt(100 * error, 2) +
+        " % low (the beam model's elastica comparison, 0.13 (opening/a)^2), "
+        "past the 1 % bound; the FEM has small-strain kinematics only: run the beam model with "
+        "Beam/Kinematics = finite for this range");
+  return worst;
 }
 
 bool check_steady_state(law::SimulationResult& result, const std::vector<double>& dissipated,

@@ -141,6 +141,8 @@ private:
   double reaction_norm(const Vec& r_full) const;
   bool newton(double opening, std::string& diagnosis);
   double roundoff_floor(const Vec& u) const; ///< residual norm below which round-off rules [N/m]
+  /// "; N crack-face points in contact at x = ... mm" for a failed solve's diagnosis (on u_).
+  std::string contact_summary();
   bool kinsol(double opening, std::string& diagnosis);
   void solve_at(double target);
   void sync() { u_ghost_ = u_; }
@@ -199,6 +201,7 @@ private:
   /// Component and support point of each locally owned dof (by index within owned_), for the
   /// rigid-body modes of the AMG near null space.
   std::vector<std::array<double, 4>> owned_support_;
+  std::vector<double> owned_arm_; ///< +1 top arm, -1 bottom arm, by index within owned_
 
   std::unique_ptr<CohesiveInterface> interface_;
   std::vector<PointMap> point_map_;
@@ -377,6 +380,7 @@ void DistributedDcbModel<dim>::setup_system() {
   std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
   std::vector<double> mine;
   owned_support_.assign(owned_.n_elements(), {{0, 0, 0, 0}});
+  owned_arm_.assign(owned_.n_elements(), 0.0);
   for (const auto& cell : dof_handler_.active_cell_iterators()) {
     if (!cell->is_locally_owned())
       continue;
@@ -387,8 +391,10 @@ void DistributedDcbModel<dim>::setup_system() {
       const auto& p = fv.quadrature_point(i);
       const double c = fe_.system_to_component_index(i).first;
       const double z = dim == 3 ? p[dim - 1] : 0.0;
-      if (owned_.is_element(dofs[i]))
+      if (owned_.is_element(dofs[i])) {
         owned_support_[owned_.index_within_set(dofs[i])] = {{c, p[0], p[1], z}};
+        owned_arm_[owned_.index_within_set(dofs[i])] = top > 0 ? 1.0 : -1.0;
+      }
       if (std::abs(p[1]) < tol)
         mine.insert(mine.end(), {0, p[0], z, c, top, double(dofs[i])});
       if (std::abs(p[0]) < tol && c == 1)
@@ -1028,6 +1034,25 @@ template <int dim>
 void DistributedDcbModel<dim>::predict(double opening) {
   if (opening_ != 0)
     u_ *= opening / opening_;
+  else {
+    // From the undeformed state: the arms turned as rigid hinges about the tip (vertical
+    // displacement +-opening/2 (1 - x / a) behind the tip, 0 ahead). The prescribed load-line
+    // values alone (a spike of one element) interpolate, on Q2 faces, to a negative opening
+    // inside the first element (-Delta/8 at three quarters of it), which switched the contact
+    // penalty on in a state that is no state of the specimen: on thin arms Newton then found no
+    // decrease of the residual from the first load step (docs/verification.md, "Thin arms").
+    const double a = x_st_[tip_];
+    std::vector<types::global_dof_index> idx;
+    std::vector<double> val;
+    for (unsigned k = 0; k < owned_support_.size(); ++k)
+      if (owned_support_[k][0] == 1) {
+        idx.push_back(owned_.nth_index_in_set(k));
+        val.push_back(owned_arm_[k] * 0.5 * opening * std::max(0.0, 1 - owned_support_[k][1] / a));
+      }
+    u_ = 0;
+    u_.set(idx, val);
+    u_.compress(VectorOperation::insert);
+  }
   opening_ = opening;
   AffineConstraints<double> constraints;
   make_constraints(opening, constraints);
@@ -1056,6 +1081,26 @@ double DistributedDcbModel<dim>::roundoff_floor(const Vec& u) const {
   const double eps = std::numeric_limits<double>::epsilon();
   return 1e3 * eps * bulk_.linfty_norm() * u.linfty_norm() *
          std::sqrt(double(dof_handler_.n_dofs()));
+}
+
+template <int dim>
+std::string DistributedDcbModel<dim>::contact_summary() {
+  sync();
+  const auto o = openings();
+  unsigned n = 0;
+  double lo = 0, hi = 0;
+  for (unsigned p = 0; p < o.size(); ++p)
+    if (o[p] < 0 && interface_->open_weight(p) > 0) {
+      const double x = interface_->x(p);
+      lo = n == 0 ? x : std::min(lo, x);
+      hi = n == 0 ? x : std::max(hi, x);
+      ++n;
+    }
+  if (n == 0)
+    return "; no crack-face point in contact";
+  return "; " + std::to_string(n) +
+         " crack-face points in contact between x = " + fmt(lo / units::mm) + " and " +
+         fmt(hi / units::mm) + " mm";
 }
 
 template <int dim>
@@ -1102,7 +1147,8 @@ bool DistributedDcbModel<dim>::newton(double opening, std::string& diagnosis) {
       // (docs/verification.md, "Thin arms"). Accepted only when no step decreases the residual.
       if (nrm <= roundoff_floor(u_))
         return true;
-      diagnosis = "line search found no decrease of the residual " + fmt(nrm) + " N";
+      diagnosis =
+          "line search found no decrease of the residual " + fmt(nrm) + " N" + contact_summary();
       return false;
     }
     u_.add(best_alpha, du);
@@ -1114,7 +1160,7 @@ bool DistributedDcbModel<dim>::newton(double opening, std::string& diagnosis) {
     return true;
   diagnosis = "no convergence in " + std::to_string(prm_.max_newton_iterations) +
               " Newton iterations (residual " + fmt(nrm / ref) + " of the reaction, tolerance " +
-              fmt(prm_.newton_tolerance) + ")";
+              fmt(prm_.newton_tolerance) + ")" + contact_summary();
   return false;
 }
 
@@ -1135,8 +1181,12 @@ bool DistributedDcbModel<dim>::kinsol(double opening, std::string& diagnosis) {
   data.strategy = Kinsol::AdditionalData::linesearch;
   data.maximum_non_linear_iterations = prm_.max_newton_iterations;
   // Max-norm stop below tolerance / sqrt(n) guarantees the l2 test; the step tolerance stops
-  // only on stagnation.
-  data.function_tolerance = prm_.newton_tolerance * ref / std::sqrt(double(dof_handler_.n_dofs()));
+  // only on stagnation. As in newton(), a residual at its round-off floor is equilibrium: the
+  // tolerance relative to the reactions can fall below the round-off of the terms that cancel in
+  // K u on refined thin-arm meshes, and KINSOL would then iterate on noise until it gives up.
+  const double floor = roundoff_floor(u_);
+  data.function_tolerance =
+      std::max(prm_.newton_tolerance * ref, floor) / std::sqrt(double(dof_handler_.n_dofs()));
   data.step_tolerance = 1e-3 * prm_.newton_tolerance * opening;
   data.maximum_setup_calls = 1;
   Kinsol solver(data, comm_);
@@ -1182,7 +1232,8 @@ bool DistributedDcbModel<dim>::kinsol(double opening, std::string& diagnosis) {
   assemble_residual(u_, r, rf);
   const double final_ref = reaction_norm(rf);
   const double nrm = norm(r);
-  if (callback_error.empty() && nrm <= prm_.newton_tolerance * final_ref)
+  if (callback_error.empty() &&
+      nrm <= std::max(prm_.newton_tolerance * final_ref, roundoff_floor(u_)))
     return true;
   diagnosis = "KINSOL returned after " + std::to_string(iterations) + " of at most " +
               std::to_string(prm_.max_newton_iterations) + " Newton iterations with residual " +
@@ -1694,6 +1745,7 @@ law::SimulationResult DistributedDcbModel<dim>::run() {
         " sub-intervals per element; if R_J falls below Eq. 2, refine FEM/Element size or raise "
         "FEM/Interface sub-intervals" +
         (regularized_law_ ? " (or lower FEM/Rigid law stiffness factor)" : ""));
+  note_small_strain_bound(result_);
   details_.unstable_advances = n_unstable_;
   details_.simulated_law_area = law_->area();
   if (dim == 3 && !material_.plane_stress)
@@ -1751,9 +1803,14 @@ run_distributed(const law::Specimen& specimen, const law::Material& material,
                 const std::string& output_dir,
                 const std::function<void(const std::string&)>& progress, MPI_Comm comm,
                 DistributedRunInfo& info, FemRunDetails& details) {
-  DistributedDcbModel<dim> model(specimen, material, law, j_tip, parameters, output_dir, progress,
+  // FEM/Polynomial degree = auto is resolved here, before the finite element is built.
+  FemParameters resolved = parameters;
+  std::vector<std::string> degree_notes;
+  resolved.degree = resolve_degree(specimen, material, parameters, degree_notes);
+  DistributedDcbModel<dim> model(specimen, material, law, j_tip, resolved, output_dir, progress,
                                  comm);
   auto result = model.run();
+  result.notes.insert(result.notes.begin(), degree_notes.begin(), degree_notes.end());
   info = model.info();
   details = model.details();
   return result;

@@ -17,8 +17,15 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Growth ratio of element heights from the crack plane (where elements are "
                     "square) towards the beam faces.");
   prm.declare_entry("Minimum layers per arm", "4", Integer(1),
-                    "Element heights are capped at arm thickness / this number.");
-  prm.declare_entry("Polynomial degree", "1", Integer(1, 2), "Degree of the FE_Q elements.");
+                    "Element layers through each arm at least: the crack-plane layer is "
+                    "min(Element size, arm thickness / this number), heights are capped at arm "
+                    "thickness / this number. Crack-plane elements more than 4 times longer "
+                    "than high are refused.");
+  prm.declare_entry("Polynomial degree", "auto", dealii::Patterns::Selection("1|2|auto"),
+                    "Degree of the FE_Q elements. auto: Q2 where Q1 elements would bend too "
+                    "stiffly (parasitic shear (G_LT/E_L)(Element size/arm thickness)^2 above "
+                    "0.004, about 0.5 % load error: thin arms), Q1 elsewhere; the run notes "
+                    "the choice.");
   prm.declare_entry("Interface sub-intervals", "4", Integer(1, 64),
                     "Sub-intervals of the composite Gauss-Lobatto rule on each crack-plane "
                     "element (1: the element nodes only). Resolves the law next to the tip, where "
@@ -84,7 +91,7 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   element_size = prm.get_double("Element size") * units::mm;
   grading = prm.get_double("Grading");
   min_layers = prm.get_integer("Minimum layers per arm");
-  degree = prm.get_integer("Polynomial degree");
+  degree = prm.get("Polynomial degree") == "auto" ? 0 : prm.get_integer("Polynomial degree");
   interface_subintervals = prm.get_integer("Interface sub-intervals");
   max_opening_increment = prm.get_double("Maximum opening increment") * units::mm;
   tip_tolerance = prm.get_double("Tip toughness tolerance");
@@ -127,7 +134,7 @@ void FemParameters::validate() const {
   require(element_size > 0, "Element size", "must be positive (mm)");
   require(grading >= 1, "Grading", "must be >= 1");
   require(min_layers >= 1, "Minimum layers per arm", "must be >= 1");
-  require(degree == 1 || degree == 2, "Polynomial degree", "must be 1 or 2");
+  require(degree <= 2, "Polynomial degree", "must be 1, 2 or auto");
   require(interface_subintervals >= 1, "Interface sub-intervals", "must be >= 1");
   require(max_opening_increment > 0, "Maximum opening increment", "must be positive (mm)");
   require(tip_tolerance > 0 && tip_tolerance < 0.1, "Tip toughness tolerance",

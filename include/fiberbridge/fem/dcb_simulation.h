@@ -29,8 +29,10 @@ struct FemParameters {
   /// law, 2 mm gives G_ss and R_J within 0.1 % of the law's values.
   double element_size = 2.0e-3;
   double grading = 1.3;        ///< growth ratio of element heights away from the crack plane
-  unsigned int min_layers = 4; ///< element height capped at arm thickness / min_layers
-  unsigned int degree = 1;     ///< polynomial degree of the FE_Q displacement elements
+  unsigned int min_layers = 4; ///< at least this many layers per arm (heights <= h/min_layers)
+  /// Polynomial degree of the FE_Q displacement elements; 0: auto (Q2 where Q1 would lock in
+  /// bending on thin arms, fem::resolve_degree in dcb_common.h).
+  unsigned int degree = 0;
   /// Sub-intervals of the composite Lobatto rule on each crack-plane element (1: nodal rule).
   unsigned int interface_subintervals = 4;
   double max_opening_increment = 0.5e-3; ///< load-point opening per nonlinear solve [m]
