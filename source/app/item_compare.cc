@@ -1,7 +1,7 @@
 // Scene item `compare`: the simulations that ran, on shared axes, with pairwise differences, and
 // the closed loop through the extraction method (what the paper's method recovers on its own
 // specimen).
-#include "fiberbridge/app/comparison.h"
+#include "fiberbridge/analysis/model_comparison.h"
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
@@ -57,7 +57,7 @@ void run_compare_item(SceneContext& ctx) {
                  "notch root moves"});
     for (std::size_t i = 0; i < models.size(); ++i)
       for (std::size_t j = i + 1; j < models.size(); ++j)
-        for (const auto& d : compare_models(*models[i], *models[j])) {
+        for (const auto& d : analysis::compare_models(*models[i], *models[j])) {
           w.row({d.model_a, d.model_b, d.quantity}, {d.rel_l2_developing, d.plateau_rel_diff,
                                                      d.peak_load_rel_diff, double(d.n_points)});
           pairs.push_back({{"model_a", d.model_a},
@@ -106,9 +106,9 @@ void run_compare_item(SceneContext& ctx) {
                 {"input law -> simulated R(delta_root) -> recovered law; R_energy is what an "
                  "experiment measures, R_eq2 is Eq. 2 at the simulated delta_root (control)"});
     for (const auto* r : models) {
-      std::vector<ClosedLoopRow> loop_rows;
+      std::vector<analysis::ClosedLoopRow> loop_rows;
       try {
-        loop_rows = closed_loop(*r, *law, j_tip, n, k);
+        loop_rows = analysis::closed_loop(*r, *law, j_tip, n, k);
       } catch (const ComputationError& e) {
         // A model too coarse for the loop does not invalidate the comparison: say so.
         rows.push_back({{"model", r->model}, {"diagnosis", e.what()}});
