@@ -27,16 +27,39 @@ void declare_compare_section(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
+namespace {
+struct CompareOptions {
+  bool closed_loop = true;
+  int intervals = 40, half_width = 2;
+};
+
+CompareOptions parse_compare_section(dealii::ParameterHandler& prm) {
+  CompareOptions o;
+  prm.enter_subsection("Compare");
+  o.closed_loop = prm.get_bool("Closed loop");
+  o.intervals = prm.get_integer("Intervals");
+  o.half_width = prm.get_integer("Smoothing half-width");
+  prm.leave_subsection();
+  return o;
+}
+} // namespace
+
+void check_compare_item(SceneContext& ctx) {
+  parse_compare_section(*ctx.prm);
+  if (!ctx.run_items.count("beam") && !ctx.run_items.count("fem") && !ctx.run_items.count("mpm"))
+    throw InputError("Run: 'compare' needs at least one simulation (beam, fem, mpm) in the same "
+                     "scene");
+  ctx.law_known_before_run();
+}
+
 void run_compare_item(SceneContext& ctx) {
   if (ctx.results.empty())
     throw InputError("Run: 'compare' needs at least one simulation (beam, fem, mpm) in the same "
                      "scene");
-  auto& prm = *ctx.prm;
-  prm.enter_subsection("Compare");
-  const bool loop = prm.get_bool("Closed loop");
-  const int n = prm.get_integer("Intervals");
-  const int k = prm.get_integer("Smoothing half-width");
-  prm.leave_subsection();
+  const CompareOptions o = parse_compare_section(*ctx.prm);
+  const bool loop = o.closed_loop;
+  const int n = o.intervals;
+  const int k = o.half_width;
   const auto law = ctx.law();
   const double j_tip = ctx.j_tip();
   Json block = Json::object();
