@@ -1,6 +1,7 @@
 // Scene item "beam": the fast beam model of the DCB (docs/design.md section 2), section "Beam".
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/scene_context.h"
+#include "fiberbridge/app/section.h"
 #include "fiberbridge/beam/dcb_beam.h"
 #include "fiberbridge/core/units.h"
 
@@ -25,9 +26,15 @@ std::string default_text(double v) {
 }
 } // namespace
 
-void declare_beam_section(dealii::ParameterHandler& prm) {
+namespace {
+/// The Beam section: beam::BeamParameters (which has no deal.II) declared, parsed and validated.
+struct BeamSection : beam::BeamParameters {
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
+void BeamSection::declare_parameters(dealii::ParameterHandler& prm) {
   const beam::BeamParameters d;
-  prm.enter_subsection("Beam");
   prm.declare_entry("Number of elements", std::to_string(d.n_elements), Integer(4, 10000000),
                     "Timoshenko elements along the ligament from the initial crack to the far "
                     "end (the free notch is one exact element). Cost grows linearly.");
@@ -60,32 +67,37 @@ void declare_beam_section(dealii::ParameterHandler& prm) {
                     "small-rotation tip moment, so the load's lever arm shortens as the arm "
                     "rotates (thin arms, openings past a tenth of the crack length). Small-"
                     "rotation runs say in their notes when the load is more than 1 % off.");
-  prm.leave_subsection();
 }
 
-namespace {
-beam::BeamParameters parse_beam_section(dealii::ParameterHandler& prm) {
-  beam::BeamParameters p;
-  prm.enter_subsection("Beam");
-  p.n_elements = prm.get_integer("Number of elements");
-  p.tip_advance = prm.get_double("Tip advance") * mm;
+void BeamSection::parse_parameters(dealii::ParameterHandler& prm) {
+  n_elements = prm.get_integer("Number of elements");
+  tip_advance = prm.get_double("Tip advance") * mm;
   // MPa/mm = 1e9 Pa/m.
-  p.foundation_modulus = prm.get_double("Foundation modulus") * 1e9;
-  p.shear_coefficient = prm.get_double("Shear coefficient");
-  p.minimum_ligament = prm.get_double("Minimum ligament") * mm;
-  p.steady_state_window = prm.get_double("Steady state window") * mm;
-  p.plateau_tolerance = prm.get_double("Plateau tolerance");
-  p.newton_tolerance = prm.get_double("Newton tolerance");
-  p.max_newton_iterations = prm.get_integer("Newton iterations");
-  p.finite_rotations = prm.get("Kinematics") == "finite";
-  prm.leave_subsection();
-  p.validate("Beam");
-  return p;
+  foundation_modulus = prm.get_double("Foundation modulus") * 1e9;
+  shear_coefficient = prm.get_double("Shear coefficient");
+  minimum_ligament = prm.get_double("Minimum ligament") * mm;
+  steady_state_window = prm.get_double("Steady state window") * mm;
+  plateau_tolerance = prm.get_double("Plateau tolerance");
+  newton_tolerance = prm.get_double("Newton tolerance");
+  max_newton_iterations = prm.get_integer("Newton iterations");
+  finite_rotations = prm.get("Kinematics") == "finite";
+  validate("Beam");
 }
 } // namespace
 
+void declare_beam_section(dealii::ParameterHandler& prm) {
+  declare_section<BeamSection>(prm, "Beam");
+}
+
+void check_beam_item(SceneContext& ctx) {
+  const BeamSection params = parse_section<BeamSection>(*ctx.prm, "Beam");
+  ctx.law_known_before_run();
+  if (ctx.specimen_from_section())
+    beam::check_dcb_inputs(ctx.specimen(), ctx.material(), params);
+}
+
 void run_beam_item(SceneContext& ctx) {
-  const beam::BeamParameters params = parse_beam_section(*ctx.prm);
+  const beam::BeamParameters params = parse_section<BeamSection>(*ctx.prm, "Beam");
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
   law::SimulationResult result =
       beam::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params, progress);

@@ -1,7 +1,7 @@
 // Scene item `compare`: the simulations that ran, on shared axes, with pairwise differences, and
 // the closed loop through the extraction method (what the paper's method recovers on its own
 // specimen).
-#include "fiberbridge/app/comparison.h"
+#include "fiberbridge/analysis/model_comparison.h"
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
@@ -27,16 +27,39 @@ void declare_compare_section(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
+namespace {
+struct CompareOptions {
+  bool closed_loop = true;
+  int intervals = 40, half_width = 2;
+};
+
+CompareOptions parse_compare_section(dealii::ParameterHandler& prm) {
+  CompareOptions o;
+  prm.enter_subsection("Compare");
+  o.closed_loop = prm.get_bool("Closed loop");
+  o.intervals = prm.get_integer("Intervals");
+  o.half_width = prm.get_integer("Smoothing half-width");
+  prm.leave_subsection();
+  return o;
+}
+} // namespace
+
+void check_compare_item(SceneContext& ctx) {
+  parse_compare_section(*ctx.prm);
+  if (!ctx.run_items.count("beam") && !ctx.run_items.count("fem") && !ctx.run_items.count("mpm"))
+    throw InputError("Run: 'compare' needs at least one simulation (beam, fem, mpm) in the same "
+                     "scene");
+  ctx.law_known_before_run();
+}
+
 void run_compare_item(SceneContext& ctx) {
   if (ctx.results.empty())
     throw InputError("Run: 'compare' needs at least one simulation (beam, fem, mpm) in the same "
                      "scene");
-  auto& prm = *ctx.prm;
-  prm.enter_subsection("Compare");
-  const bool loop = prm.get_bool("Closed loop");
-  const int n = prm.get_integer("Intervals");
-  const int k = prm.get_integer("Smoothing half-width");
-  prm.leave_subsection();
+  const CompareOptions o = parse_compare_section(*ctx.prm);
+  const bool loop = o.closed_loop;
+  const int n = o.intervals;
+  const int k = o.half_width;
   const auto law = ctx.law();
   const double j_tip = ctx.j_tip();
   Json block = Json::object();
@@ -57,7 +80,7 @@ void run_compare_item(SceneContext& ctx) {
                  "notch root moves"});
     for (std::size_t i = 0; i < models.size(); ++i)
       for (std::size_t j = i + 1; j < models.size(); ++j)
-        for (const auto& d : compare_models(*models[i], *models[j])) {
+        for (const auto& d : analysis::compare_models(*models[i], *models[j])) {
           w.row({d.model_a, d.model_b, d.quantity}, {d.rel_l2_developing, d.plateau_rel_diff,
                                                      d.peak_load_rel_diff, double(d.n_points)});
           pairs.push_back({{"model_a", d.model_a},
@@ -106,9 +129,9 @@ void run_compare_item(SceneContext& ctx) {
                 {"input law -> simulated R(delta_root) -> recovered law; R_energy is what an "
                  "experiment measures, R_eq2 is Eq. 2 at the simulated delta_root (control)"});
     for (const auto* r : models) {
-      std::vector<ClosedLoopRow> loop_rows;
+      std::vector<analysis::ClosedLoopRow> loop_rows;
       try {
-        loop_rows = closed_loop(*r, *law, j_tip, n, k);
+        loop_rows = analysis::closed_loop(*r, *law, j_tip, n, k);
       } catch (const ComputationError& e) {
         // A model too coarse for the loop does not invalidate the comparison: say so.
         rows.push_back({{"model", r->model}, {"diagnosis", e.what()}});

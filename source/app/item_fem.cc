@@ -9,9 +9,11 @@
 // this item (the distributed engine is collective); only its rank 0 prints progress, and the
 // file writers are switched off on the ranks that do not write (core/output_guard.h).
 #include "fiberbridge/app/scene_context.h"
+#include "fiberbridge/app/section.h"
 #include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/fem/dcb_simulation.h"
 #include "fiberbridge/fem/distributed_dcb.h"
+#include "fiberbridge/fem/input_check.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -21,16 +23,18 @@
 namespace fiberbridge::app {
 
 void declare_fem_section(dealii::ParameterHandler& prm) {
-  prm.enter_subsection("FEM");
-  fem::FemParameters::declare_parameters(prm);
-  prm.leave_subsection();
+  declare_section<fem::FemParameters>(prm, "FEM");
+}
+
+void check_fem_item(SceneContext& ctx) {
+  const auto params = parse_section<fem::FemParameters>(*ctx.prm, "FEM");
+  const law::TractionLaw* law = ctx.law_known_before_run();
+  if (ctx.specimen_from_section())
+    fem::check_dcb_inputs(ctx.specimen(), ctx.material(), params, law);
 }
 
 void run_fem_item(SceneContext& ctx) {
-  fem::FemParameters params;
-  ctx.prm->enter_subsection("FEM");
-  params.parse_parameters(*ctx.prm);
-  ctx.prm->leave_subsection();
+  const auto params = parse_section<fem::FemParameters>(*ctx.prm, "FEM");
   const MPI_Comm comm = simulation_communicator();
   const unsigned n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
   const bool rank0 = dealii::Utilities::MPI::this_mpi_process(comm) == 0;

@@ -226,6 +226,13 @@ void write_identification(SceneContext& ctx, const identify::Identification& id)
 
 } // namespace
 
+void check_identify_item(SceneContext& ctx) {
+  parse_identify_section(*ctx.prm);
+  read_scene_records(ctx); // the records are small: reading them is the check of Test
+  ctx.specimen();
+  ctx.material();
+}
+
 void run_identify_item(SceneContext& ctx) {
   const auto settings = parse_identify_section(*ctx.prm);
   ctx.prm->enter_subsection("Identify");

@@ -1,6 +1,7 @@
 // Scene item "mpm": the explicit MPM model of the DCB (docs/design.md section 2), section "MPM".
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/scene_context.h"
+#include "fiberbridge/app/section.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/mpm/dcb.h"
 #include "fiberbridge/mpm/parameters.h"
@@ -16,9 +17,15 @@ using dealii::Patterns::Double;
 using dealii::Patterns::Integer;
 using units::mm;
 
-void declare_mpm_section(dealii::ParameterHandler& prm) {
+namespace {
+/// The MPM section: mpm::MpmParameters (which has no deal.II) declared, parsed and validated.
+struct MpmSection : mpm::MpmParameters {
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
+
+void MpmSection::declare_parameters(dealii::ParameterHandler& prm) {
   const mpm::MpmParameters d;
-  prm.enter_subsection("MPM");
   prm.declare_entry("Cell size", std::to_string(d.cell_size / mm), Double(0),
                     "Edge of the square background-grid cells in mm; at least 2 cells through "
                     "each arm. Cost grows like 1/cell^3 (particles and time steps).");
@@ -68,37 +75,42 @@ void declare_mpm_section(dealii::ParameterHandler& prm) {
                     "Wall time in seconds between checkpoints of the whole model state into "
                     "resume/mpm_state.bin of the output directory, which `fiberbridge run SCENE "
                     "--resume` continues from (0 = none).");
-  prm.leave_subsection();
 }
 
-namespace {
-mpm::MpmParameters parse_mpm_section(dealii::ParameterHandler& prm) {
-  mpm::MpmParameters p;
-  prm.enter_subsection("MPM");
-  p.cell_size = prm.get_double("Cell size") * mm;
-  p.particles_per_cell = prm.get_integer("Particles per cell");
-  p.cfl = prm.get_double("CFL factor");
-  p.pic_fraction = prm.get_double("PIC fraction");
-  p.loading_periods = prm.get_double("Loading periods");
-  p.ramp_periods = prm.get_double("Ramp periods");
-  p.growth_step_cells = prm.get_integer("Growth step");
-  p.j_window_periods = prm.get_double("J window periods");
-  p.tip_j_cells = prm.get_double("Tip J domain");
-  p.rigid_law_rise_fraction = prm.get_double("Rigid law rise fraction");
-  p.end_ligament = prm.get_double("End ligament") * mm;
-  p.steady_growth = prm.get_double("Steady growth") * mm;
-  p.max_steps = prm.get_integer("Maximum steps");
-  p.threads = prm.get_integer("Threads");
-  p.vtu_every_advances = prm.get_integer("VTU every advances");
-  p.checkpoint_interval = prm.get_double("Checkpoint interval");
-  prm.leave_subsection();
-  p.validate();
-  return p;
+void MpmSection::parse_parameters(dealii::ParameterHandler& prm) {
+  cell_size = prm.get_double("Cell size") * mm;
+  particles_per_cell = prm.get_integer("Particles per cell");
+  cfl = prm.get_double("CFL factor");
+  pic_fraction = prm.get_double("PIC fraction");
+  loading_periods = prm.get_double("Loading periods");
+  ramp_periods = prm.get_double("Ramp periods");
+  growth_step_cells = prm.get_integer("Growth step");
+  j_window_periods = prm.get_double("J window periods");
+  tip_j_cells = prm.get_double("Tip J domain");
+  rigid_law_rise_fraction = prm.get_double("Rigid law rise fraction");
+  end_ligament = prm.get_double("End ligament") * mm;
+  steady_growth = prm.get_double("Steady growth") * mm;
+  max_steps = prm.get_integer("Maximum steps");
+  threads = prm.get_integer("Threads");
+  vtu_every_advances = prm.get_integer("VTU every advances");
+  checkpoint_interval = prm.get_double("Checkpoint interval");
+  validate();
 }
 } // namespace
 
+void declare_mpm_section(dealii::ParameterHandler& prm) {
+  declare_section<MpmSection>(prm, "MPM");
+}
+
+void check_mpm_item(SceneContext& ctx) {
+  const MpmSection params = parse_section<MpmSection>(*ctx.prm, "MPM");
+  const law::TractionLaw* law = ctx.law_known_before_run();
+  if (ctx.specimen_from_section())
+    mpm::check_dcb_inputs(ctx.specimen(), ctx.material(), params, law);
+}
+
 void run_mpm_item(SceneContext& ctx) {
-  mpm::MpmParameters params = parse_mpm_section(*ctx.prm);
+  mpm::MpmParameters params = parse_section<MpmSection>(*ctx.prm, "MPM");
   params.resume = ctx.resume;
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
   law::SimulationResult result = mpm::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(),

@@ -5,6 +5,8 @@
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 
+#include <cmath>
+#include <filesystem>
 #include <sstream>
 
 namespace fiberbridge::app {
@@ -38,7 +40,10 @@ void declare_test_section(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
-void run_reduce_item(SceneContext& ctx) {
+namespace {
+
+/// The Test section and the Specimen, as `reduce` uses them; every listed record must exist.
+ReduceStepOptions parse_test_section(SceneContext& ctx) {
   auto& prm = *ctx.prm;
   ReduceStepOptions o;
   o.where = ctx.scene_file + ": Specimen";
@@ -47,29 +52,46 @@ void run_reduce_item(SceneContext& ctx) {
   o.specimen.arm_thickness = s.arm_thickness();
   o.specimen.length = s.length;
   prm.enter_subsection("Test");
-  std::istringstream files(prm.get("Files"));
-  for (std::string f; std::getline(files, f, ',');) {
-    const auto b = f.find_first_not_of(" \t");
-    if (b != std::string::npos)
-      o.files.push_back(
-          resolve_scene_path(f.substr(b, f.find_last_not_of(" \t") - b + 1), ctx.scene_file));
-  }
-  if (o.files.empty())
-    throw InputError(ctx.scene_file + ": Test/Files lists no record; give one or more CSV files");
-  o.read.columns =
-      analysis::RecordColumnMap::parse(prm.get("Columns"), ctx.scene_file + ": Test/Columns");
+  const std::string files = prm.get("Files"), columns = prm.get("Columns");
   o.read.crack_back_tolerance = prm.get_double("Crack back tolerance") * mm;
-  if (prm.get_bool("Use specimen initial crack"))
-    o.specimen.initial_crack = s.initial_crack;
+  const bool use_specimen_a0 = prm.get_bool("Use specimen initial crack");
   const double w = prm.get_double("Smoothing window");
-  o.reduce.smoothing_window = w > 0 ? w * mm : NAN;
   o.reduce.large_displacement_correction = prm.get_bool("Large displacement correction");
   o.reduce.plateau_fraction = prm.get_double("Plateau fraction");
   const double l1 = prm.get_double("Pin to arm mid-plane"),
                l2 = prm.get_double("Pin to block edge");
+  prm.leave_subsection();
+  std::istringstream list(files);
+  for (std::string f; std::getline(list, f, ',');) {
+    const auto b = f.find_first_not_of(" \t");
+    if (b == std::string::npos)
+      continue;
+    f = f.substr(b, f.find_last_not_of(" \t") - b + 1);
+    const std::string path = resolve_scene_path(f, ctx.scene_file);
+    if (!std::filesystem::exists(path))
+      throw InputError(ctx.scene_file + ": Test/Files: record '" + f + "' not found");
+    o.files.push_back(path);
+  }
+  if (o.files.empty())
+    throw InputError(ctx.scene_file + ": Test/Files lists no record; give one or more CSV files");
+  o.read.columns = analysis::RecordColumnMap::parse(columns, ctx.scene_file + ": Test/Columns");
+  if (use_specimen_a0)
+    o.specimen.initial_crack = s.initial_crack;
+  o.reduce.smoothing_window = w > 0 ? w * mm : NAN;
   o.specimen.pin_to_arm_midplane = l1 > 0 ? l1 * mm : NAN;
   o.specimen.pin_to_block_edge = l2 > 0 ? l2 * mm : NAN;
-  prm.leave_subsection();
+  return o;
+}
+
+} // namespace
+
+void check_reduce_item(SceneContext& ctx) {
+  parse_test_section(ctx);
+}
+
+void run_reduce_item(SceneContext& ctx) {
+  auto& prm = *ctx.prm;
+  const ReduceStepOptions o = parse_test_section(ctx);
   const auto r = run_reduce(o, ctx.output_dir, ctx.summary);
   // With a measured notch-root opening, R(delta_root) feeds extract/fit (which run after reduce)
   // unless the scene names its own Data/File.

@@ -13,6 +13,7 @@
 
 #include <deal.II/base/patterns.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -301,32 +302,87 @@ Json run_stability_case(SceneContext& ctx, const Case& c, const std::string& mod
 
 } // namespace
 
-void run_study_item(SceneContext& ctx) {
-  auto& prm = *ctx.prm;
+namespace {
+
+/// What the Study section asks for: ladders, stability cases and the thresholds.
+struct StudyPlan {
+  std::vector<Ladder> ladders;
+  std::vector<std::string> stability_models;
+  std::vector<Case> cases;
+  double plateau_tol = 0, target_error = 0, mpm_target = 0;
+};
+
+/// A model named in the Study section: one of the simulation items built in.
+void require_model(const std::string& model, const std::string& key) {
+  if (model != "beam" && model != "fem" && model != "mpm")
+    throw InputError("Study/" + key + ": unknown model '" + model + "', expected beam, fem, mpm");
+  if (!find_item(model))
+    throw InputError("Study/" + key + ": model '" + model + "' is not available in this build");
+}
+
+StudyPlan parse_study_section(dealii::ParameterHandler& prm) {
+  StudyPlan plan;
   prm.enter_subsection("Study");
   const auto ladder_models = split(prm.get("Ladder models"), ',');
   std::map<std::string, std::string> ladder_text{{"beam", prm.get("Beam ladder")},
                                                  {"fem", prm.get("FEM ladder")},
                                                  {"mpm", prm.get("MPM ladder")}};
-  const auto stability_models = split(prm.get("Stability models"), ',');
+  plan.stability_models = split(prm.get("Stability models"), ',');
   const std::string case_list = prm.get("Stability cases");
-  const double plateau_tol = prm.get_double("Plateau tolerance");
-  const double target_error = prm.get_double("Target error");
-  const double mpm_target = prm.get_double("MPM target error");
+  plan.plateau_tol = prm.get_double("Plateau tolerance");
+  plan.target_error = prm.get_double("Target error");
+  plan.mpm_target = prm.get_double("MPM target error");
   prm.leave_subsection();
-  if (ladder_models.empty() && stability_models.empty())
+  if (ladder_models.empty() && plan.stability_models.empty())
     throw InputError("Study: neither 'Ladder models' nor 'Stability models' names a model");
-  std::vector<Ladder> ladders;
-  for (const auto& model : ladder_models)
-    ladders.push_back(parse_ladder(model, ladder_text[model]));
-  std::vector<Case> cases;
-  if (!stability_models.empty()) {
-    for (const auto& c : stability_cases())
-      if (case_list == "all" || ("," + case_list + ",").find(c.name) != std::string::npos)
-        cases.push_back(c);
-    if (cases.empty())
+  for (const auto& model : ladder_models) {
+    require_model(model, "Ladder models");
+    plan.ladders.push_back(parse_ladder(model, ladder_text[model]));
+  }
+  for (const auto& model : plan.stability_models)
+    require_model(model, "Stability models");
+  if (!plan.stability_models.empty()) {
+    const auto all = stability_cases();
+    const auto wanted = split(case_list, ',');
+    for (const auto& name : wanted)
+      if (name != "all" &&
+          std::none_of(all.begin(), all.end(), [&](const Case& c) { return c.name == name; }))
+        throw InputError("Study/Stability cases: unknown case '" + name + "'");
+    for (const auto& c : all)
+      if (case_list == "all" || std::find(wanted.begin(), wanted.end(), c.name) != wanted.end())
+        plan.cases.push_back(c);
+    if (plan.cases.empty())
       throw InputError("Study/Stability cases: no known case in '" + case_list + "'");
   }
+  return plan;
+}
+
+} // namespace
+
+void check_study_item(SceneContext& ctx) {
+  const StudyPlan plan = parse_study_section(*ctx.prm);
+  // Every ladder level is the model's section with the level's keys: check each as the model's
+  // item would (a misspelt key or a bad value fails now, not after the coarser levels ran). The
+  // stability cases' failures are outcomes of the study, not input errors.
+  for (const auto& ladder : plan.ladders)
+    for (std::size_t l = 0; l < ladder.levels; ++l) {
+      std::vector<std::string> sets;
+      for (const auto& [k, v] : ladder.keys)
+        sets.push_back(section_of(ladder.model) + "/" + k + "=" + v[l]);
+      ScopedOverrides o(*ctx.prm, sets, "Study/" + section_of(ladder.model) + " ladder");
+      find_item(ladder.model)->check(ctx);
+    }
+  ctx.law_known_before_run();
+}
+
+void run_study_item(SceneContext& ctx) {
+  const StudyPlan plan = parse_study_section(*ctx.prm);
+  const auto& ladders = plan.ladders;
+  const auto& stability_models = plan.stability_models;
+  const auto& cases = plan.cases;
+  const double plateau_tol = plan.plateau_tol;
+  const double target_error = plan.target_error;
+  const double mpm_target = plan.mpm_target;
 
   // ---- every run of the study is one task (task_distributor.h): ladder levels, then the
   // stability cases. Each task writes its own study/<run> folder; the tables come from the

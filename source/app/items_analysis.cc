@@ -6,11 +6,13 @@
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 
 #include <deal.II/base/patterns.h>
 
 #include <cmath>
+#include <filesystem>
 
 namespace fiberbridge::app {
 
@@ -24,9 +26,8 @@ using units::mm;
 namespace {
 
 /// "auto" or a positive number; returns 0 for auto.
-double auto_or_positive(dealii::ParameterHandler& prm, const std::string& key,
-                        const std::string& section, double unit) {
-  const std::string v = prm.get(key);
+double auto_or_positive(const std::string& v, const std::string& key, const std::string& section,
+                        double unit) {
   if (v == "auto")
     return 0;
   char* end = nullptr;
@@ -144,30 +145,40 @@ void declare_specimen_sections(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
-void run_extract_item(SceneContext& ctx) {
+namespace {
+
+/// A data file named in the scene: resolved against the scene's folder; it must exist.
+std::string existing_scene_file(const std::string& file, const std::string& key,
+                                const SceneContext& ctx) {
+  const std::string path = resolve_scene_path(file, ctx.scene_file);
+  if (!std::filesystem::exists(path))
+    throw InputError(ctx.scene_file + ": " + key + ": file '" + file + "' not found");
+  return path;
+}
+
+/// The Data section. `file_may_come_later`: reduce runs first and may name the file itself.
+ExtractionOptions parse_data_section(SceneContext& ctx, bool file_may_come_later) {
   auto& prm = *ctx.prm;
-  prm.enter_subsection("Data");
   ExtractionOptions o;
+  prm.enter_subsection("Data");
   o.data_file = prm.get("File");
-  if (o.data_file.empty())
-    throw InputError("Data/File: the scene runs 'extract' but names no data file");
-  o.data_file = resolve_scene_path(o.data_file, ctx.scene_file);
-  o.delta_c = auto_or_positive(prm, "Delta c", "Data", mm);
-  o.j_tip = auto_or_positive(prm, "J tip", "Data", 1.0);
   o.intervals = prm.get_integer("Intervals");
   o.half_width = prm.get_integer("Smoothing half-width");
   o.grid_points = prm.get_integer("Averaging grid points");
+  const std::string delta_c = prm.get("Delta c"), j_tip = prm.get("J tip");
   prm.leave_subsection();
-  auto e = std::make_shared<ExtractionOutcome>(run_extraction(o, ctx.output_dir, ctx.summary));
-  ctx.extraction = e;
+  o.delta_c = auto_or_positive(delta_c, "Delta c", "Data", mm);
+  o.j_tip = auto_or_positive(j_tip, "J tip", "Data", 1.0);
+  if (!o.data_file.empty())
+    o.data_file = existing_scene_file(o.data_file, "Data/File", ctx);
+  else if (!file_may_come_later)
+    throw InputError("Data/File: the scene runs 'extract' but names no data file");
+  return o;
 }
 
-void run_fit_item(SceneContext& ctx) {
-  if (!ctx.extraction)
-    run_extract_item(ctx); // fit works on the extracted law: it implies extract
-  auto& prm = *ctx.prm;
-  prm.enter_subsection("Fit");
+FitOptions parse_fit_section(dealii::ParameterHandler& prm) {
   FitOptions o;
+  prm.enter_subsection("Fit");
   o.d1 = prm.get_double("Delta 1") * mm;
   o.d2 = prm.get_double("Delta 2") * mm;
   o.free_breakpoints = prm.get_bool("Free breakpoints");
@@ -175,15 +186,18 @@ void run_fit_item(SceneContext& ctx) {
   o.d1_max = prm.get_double("Delta 1 maximum") * mm;
   o.d2_max = prm.get_double("Delta 2 maximum") * mm;
   prm.leave_subsection();
-  const auto fit = run_trilinear_fit(*ctx.extraction, o, ctx.output_dir, ctx.summary);
-  // The extracted law is handed to the simulations without being retyped
-  // (docs/design.md section 5).
-  ctx.fitted_law = std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(fit.law));
-  ctx.fitted_j_tip = ctx.extraction->steady.j_tip;
-  plot_extraction(*ctx.extraction, &fit, ctx.output_dir, ctx.summary);
+  // What can be said before delta_c is known (run_trilinear_fit checks d2 < delta_c).
+  if (!o.free_breakpoints && !(o.d1 > 0 && o.d1 < o.d2))
+    throw InputError("Fit/Delta 1, Delta 2: need 0 < Delta 1 < Delta 2 (mm), got " +
+                     fmt(o.d1 / mm) + " and " + fmt(o.d2 / mm));
+  if (o.free_breakpoints && !(o.d1_min > 0 && o.d1_min < o.d1_max))
+    throw InputError("Fit/Delta 1 minimum, Delta 1 maximum: need 0 < minimum < maximum (mm), "
+                     "got " +
+                     fmt(o.d1_min / mm) + " and " + fmt(o.d1_max / mm));
+  return o;
 }
 
-void run_rank_item(SceneContext& ctx) {
+RankOptions parse_rank_section(SceneContext& ctx) {
   auto& prm = *ctx.prm;
   prm.enter_subsection("Rank");
   RankOptions o;
@@ -193,24 +207,82 @@ void run_rank_item(SceneContext& ctx) {
   prm.leave_subsection();
   if (o.table_file.empty())
     throw InputError("Rank/Table file: the scene runs 'rank' but names no table");
-  o.table_file = resolve_scene_path(o.table_file, ctx.scene_file);
-  run_ranking(o, ctx.output_dir, ctx.summary);
+  o.table_file = existing_scene_file(o.table_file, "Rank/Table file", ctx);
+  return o;
+}
+
+struct BridgingInput {
+  analysis::BridgingFiber fiber;
+  double zone_length = 0, opening = 0;
+  double stress = 0; ///< 0: from the scene's law
+};
+
+BridgingInput parse_bridging_section(dealii::ParameterHandler& prm) {
+  BridgingInput b;
+  prm.enter_subsection("Bridging");
+  b.fiber.E_f = prm.get_double("Fiber modulus") * units::GPa;
+  b.fiber.r_f = prm.get_double("Fiber radius") * units::um;
+  b.fiber.sigma_fb = prm.get_double("Fiber strength") * units::MPa;
+  b.fiber.G_c = prm.get_double("Peeling toughness");
+  b.zone_length = prm.get_double("Zone length") * mm;
+  b.opening = prm.get_double("Opening") * mm;
+  const std::string stress = prm.get("Stress");
+  prm.leave_subsection();
+  b.stress = auto_or_positive(stress, "Stress", "Bridging", kPa);
+  const auto& f = b.fiber;
+  if (!(b.zone_length > 0 && b.opening > 0 && f.E_f > 0 && f.r_f > 0 && f.sigma_fb > 0 &&
+        f.G_c > 0))
+    throw InputError("Bridging: zone length, opening and fiber properties must be positive");
+  return b;
+}
+
+} // namespace
+
+void check_extract_item(SceneContext& ctx) {
+  parse_data_section(ctx, ctx.run_items.count("reduce") > 0);
+}
+
+void run_extract_item(SceneContext& ctx) {
+  auto e = std::make_shared<ExtractionOutcome>(
+      run_extraction(parse_data_section(ctx, false), ctx.output_dir, ctx.summary));
+  ctx.extraction = e;
+}
+
+void check_fit_item(SceneContext& ctx) {
+  check_extract_item(ctx); // fit implies extract
+  parse_fit_section(*ctx.prm);
+}
+
+void run_fit_item(SceneContext& ctx) {
+  if (!ctx.extraction)
+    run_extract_item(ctx); // fit works on the extracted law: it implies extract
+  const FitOptions o = parse_fit_section(*ctx.prm);
+  const auto fit = run_trilinear_fit(*ctx.extraction, o, ctx.output_dir, ctx.summary);
+  // The extracted law is handed to the simulations without being retyped
+  // (docs/design.md section 5).
+  ctx.fitted_law = std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(fit.law));
+  ctx.fitted_j_tip = ctx.extraction->steady.j_tip;
+  plot_extraction(*ctx.extraction, &fit, ctx.output_dir, ctx.summary);
+}
+
+void check_rank_item(SceneContext& ctx) {
+  parse_rank_section(ctx);
+}
+
+void run_rank_item(SceneContext& ctx) {
+  run_ranking(parse_rank_section(ctx), ctx.output_dir, ctx.summary);
+}
+
+void check_bridging_item(SceneContext& ctx) {
+  if (parse_bridging_section(*ctx.prm).stress == 0)
+    ctx.law_known_before_run();
 }
 
 void run_bridging_item(SceneContext& ctx) {
-  auto& prm = *ctx.prm;
-  prm.enter_subsection("Bridging");
-  analysis::BridgingFiber f;
-  f.E_f = prm.get_double("Fiber modulus") * units::GPa;
-  f.r_f = prm.get_double("Fiber radius") * units::um;
-  f.sigma_fb = prm.get_double("Fiber strength") * units::MPa;
-  f.G_c = prm.get_double("Peeling toughness");
-  const double l_b = prm.get_double("Zone length") * mm;
-  const double delta = prm.get_double("Opening") * mm;
-  double sigma = auto_or_positive(prm, "Stress", "Bridging", kPa);
-  prm.leave_subsection();
-  if (!(l_b > 0 && delta > 0 && f.E_f > 0 && f.r_f > 0 && f.sigma_fb > 0 && f.G_c > 0))
-    throw InputError("Bridging: zone length, opening and fiber properties must be positive");
+  const BridgingInput in = parse_bridging_section(*ctx.prm);
+  const analysis::BridgingFiber& f = in.fiber;
+  const double l_b = in.zone_length, delta = in.opening;
+  double sigma = in.stress;
   std::string stress_source = "Bridging/Stress";
   if (sigma == 0) {
     sigma = ctx.law()->envelope(delta);

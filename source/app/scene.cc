@@ -19,35 +19,29 @@
 
 namespace fiberbridge::app {
 
-namespace {
-
-void declare_shared(dealii::ParameterHandler&) {}
-
-} // namespace
-
 const std::vector<SceneItem>& scene_items() {
   // Order = execution order: analysis first (fit hands its law on), then simulations, then the
   // items that compare them.
   static const std::vector<SceneItem> items = {
-      {"reduce", &declare_test_section, &run_reduce_item},
+      {"reduce", &declare_test_section, &check_reduce_item, &run_reduce_item},
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
-      {"identify", &declare_identify_section, &run_identify_item},
+      {"identify", &declare_identify_section, &check_identify_item, &run_identify_item},
 #endif
-      {"extract", &declare_data_section, &run_extract_item},
-      {"fit", &declare_fit_section, &run_fit_item},
-      {"rank", &declare_rank_section, &run_rank_item},
-      {"bridging", &declare_bridging_section, &run_bridging_item},
+      {"extract", &declare_data_section, &check_extract_item, &run_extract_item},
+      {"fit", &declare_fit_section, &check_fit_item, &run_fit_item},
+      {"rank", &declare_rank_section, &check_rank_item, &run_rank_item},
+      {"bridging", &declare_bridging_section, &check_bridging_item, &run_bridging_item},
 #ifdef FIBERBRIDGE_HAVE_BEAM
-      {"beam", &declare_beam_section, &run_beam_item},
+      {"beam", &declare_beam_section, &check_beam_item, &run_beam_item},
 #endif
 #ifdef FIBERBRIDGE_HAVE_FEM
-      {"fem", &declare_fem_section, &run_fem_item},
+      {"fem", &declare_fem_section, &check_fem_item, &run_fem_item},
 #endif
 #ifdef FIBERBRIDGE_HAVE_MPM
-      {"mpm", &declare_mpm_section, &run_mpm_item},
+      {"mpm", &declare_mpm_section, &check_mpm_item, &run_mpm_item},
 #endif
-      {"compare", &declare_compare_section, &run_compare_item},
-      {"study", &declare_study_section, &run_study_item},
+      {"compare", &declare_compare_section, &check_compare_item, &run_compare_item},
+      {"study", &declare_study_section, &check_study_item, &run_study_item},
   };
   return items;
 }
@@ -68,7 +62,6 @@ void declare_everything(dealii::ParameterHandler& prm) {
   for (const auto& item : scene_items())
     if (item.declare)
       item.declare(prm);
-  declare_shared(prm);
 }
 
 std::vector<std::string> split_list(const std::string& s) {
@@ -192,6 +185,12 @@ std::vector<std::string> read_scene(dealii::ParameterHandler& prm, const std::st
   return wanted;
 }
 
+void check_scene(SceneContext& ctx) {
+  for (const auto& item : scene_items())
+    if (ctx.run_items.count(item.name))
+      item.check(ctx);
+}
+
 std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides,
                       bool resume) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -202,6 +201,10 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
   SceneContext ctx;
   ctx.prm = &prm;
   ctx.scene_file = prm_file;
+  ctx.run_items = wanted_set;
+  // Every section the run will use is read and validated before anything is written: a bad value
+  // in the section of the last item must not surface after the first item's minutes of work.
+  check_scene(ctx);
   ctx.output_dir = prm.get("Output directory");
   // Under mpirun only rank 0 writes (core/output_guard.h); the others must not remove the
   // summary rank 0 is about to write either.

@@ -35,6 +35,12 @@ law::LawSpec read_law_section(dealii::ParameterHandler& prm, const std::string& 
 
 } // namespace
 
+const law::TractionLaw* SceneContext::law_known_before_run() {
+  if (fitted_law || run_items.count("fit") || run_items.count("identify"))
+    return nullptr;
+  return law().get();
+}
+
 law::TractionLawPtr SceneContext::law() {
   if (fitted_law)
     return fitted_law;

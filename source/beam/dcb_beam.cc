@@ -47,6 +47,20 @@ void BeamParameters::validate(const std::string& c) const {
     throw InputError(c + ": max_advances must be >= 1");
 }
 
+void check_dcb_inputs(const law::Specimen& specimen, const law::Material& material,
+                      const BeamParameters& parameters) {
+  specimen.validate();
+  material.validate();
+  parameters.validate();
+  const double minimum_ligament =
+      parameters.minimum_ligament > 0 ? parameters.minimum_ligament : specimen.height;
+  if (!(specimen.length - specimen.initial_crack > minimum_ligament))
+    throw InputError(
+        "Specimen: the ligament L - a0 = " + fmt((specimen.length - specimen.initial_crack) / mm) +
+        " mm is not longer than the minimum ligament " + fmt(minimum_ligament / mm) +
+        " mm (Beam/Minimum ligament; 0 = the specimen height)");
+}
+
 namespace {
 
 /// Exact two-node Timoshenko element (cubic deflection, quadratic rotation: exact for an unloaded
@@ -142,9 +156,7 @@ DcbBeamSolver::DcbBeamSolver(const law::Specimen& specimen, const law::Material&
                              const std::function<void(const std::string&)>& progress)
     : specimen_(specimen), material_(material), law_(&law), j_tip_(j_tip), prm_(parameters),
       progress_(progress) {
-  specimen_.validate();
-  material_.validate();
-  prm_.validate();
+  check_dcb_inputs(specimen_, material_, prm_);
   if (!(j_tip_ > 0) || !std::isfinite(j_tip_))
     throw InputError("Cohesive law/J tip: must be positive (J/m^2), got " + fmt(j_tip_));
   const double k =
@@ -158,11 +170,6 @@ DcbBeamSolver::DcbBeamSolver(const law::Specimen& specimen, const law::Material&
   force_scale_ = lefm_state(arm_, j_tip_, specimen_.initial_crack).load;
   if (prm_.minimum_ligament == 0)
     prm_.minimum_ligament = specimen_.height;
-  if (!(specimen_.length - specimen_.initial_crack > prm_.minimum_ligament))
-    throw InputError("Specimen: the ligament L - a0 = " +
-                     fmt((specimen_.length - specimen_.initial_crack) / mm) +
-                     " mm is not longer than the minimum ligament " +
-                     fmt(prm_.minimum_ligament / mm) + " mm");
   setup_mesh();
 }
 

@@ -23,15 +23,49 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
-std::vector<std::string> split_commas(const std::string& line) {
+/// The cells of one line: commas separate them and spaces around a cell are dropped. A cell in
+/// double quotes may hold commas and doubled quotes ("" for "), as spreadsheet programs write
+/// them (RFC 4180), but must end on the same line. `where` is "file:line" for messages.
+std::vector<std::string> split_cells(const std::string& line, const std::string& where) {
   std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream in(line);
-  while (std::getline(in, cell, ','))
-    cells.push_back(trim(cell));
-  if (!line.empty() && line.back() == ',')
-    cells.push_back("");
-  return cells;
+  std::size_t i = 0;
+  const auto skip_blanks = [&] {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r'))
+      ++i;
+  };
+  while (true) {
+    skip_blanks();
+    std::string cell;
+    if (i < line.size() && line[i] == '"') {
+      bool closed = false;
+      for (++i; i < line.size(); ++i) {
+        if (line[i] != '"') {
+          cell += line[i];
+        } else if (i + 1 < line.size() && line[i + 1] == '"') {
+          cell += '"';
+          ++i;
+        } else {
+          closed = true;
+          ++i;
+          break;
+        }
+      }
+      if (!closed)
+        throw InputError(where + ": a quoted cell has no closing quote (quoted cells must end "
+                                 "on their line)");
+      skip_blanks();
+      if (i < line.size() && line[i] != ',')
+        throw InputError(where + ": text after the closing quote of a quoted cell");
+    } else {
+      const auto end = line.find(',', i);
+      cell = trim(line.substr(i, end == std::string::npos ? std::string::npos : end - i));
+      i = end == std::string::npos ? line.size() : end;
+    }
+    cells.push_back(cell);
+    if (i >= line.size())
+      return cells;
+    ++i; // the comma; a line ending in one has an empty last cell
+  }
 }
 
 } // namespace
@@ -48,7 +82,9 @@ CsvTable CsvTable::read(const std::string& path) {
 CsvTable CsvTable::parse(const std::string& text, const std::string& source_name) {
   CsvTable t;
   t.source_ = source_name;
-  std::istringstream in(text);
+  // A UTF-8 byte-order mark (spreadsheet exports) is not part of the first column's name.
+  const std::string bom = "\xEF\xBB\xBF";
+  std::istringstream in(text.compare(0, bom.size(), bom) == 0 ? text.substr(bom.size()) : text);
   std::string line;
   std::size_t line_no = 0;
   while (std::getline(in, line)) {
@@ -56,7 +92,7 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& source_name
     const std::string content = trim(line);
     if (content.empty() || content[0] == '#')
       continue;
-    auto cells = split_commas(content);
+    auto cells = split_cells(content, source_name + ":" + std::to_string(line_no));
     if (t.header_.empty()) {
       t.header_ = cells;
       for (std::size_t i = 0; i < cells.size(); ++i) {

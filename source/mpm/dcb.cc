@@ -33,13 +33,34 @@ using units::mm;
 
 } // namespace
 
+void check_dcb_inputs(const law::Specimen& s, const law::Material& m, const MpmParameters& p,
+                      const law::TractionLaw* law) {
+  p.validate();
+  s.validate();
+  m.validate();
+  const double c = p.cell_size, h = s.arm_thickness(), L = s.length;
+  if (h < 2 * c)
+    throw InputError("MPM/Cell size: " + fmt(c / mm) +
+                     " mm leaves fewer than 2 cells through an arm of " + fmt(h / mm) +
+                     " mm; use at most " + fmt(h / 2 / mm) + " mm");
+  // As DcbModel::setup_body places them: the tip on the node column nearest to the sawn crack's
+  // end, the last tip position one end ligament before the far end.
+  const double ligament = p.end_ligament > 0 ? p.end_ligament : s.height;
+  const double a0 = std::round(s.initial_crack / c) * c;
+  if (!(L - ligament > a0 + 2 * c))
+    throw InputError("MPM/End ligament: the tip could not grow: initial crack " +
+                     fmt(s.initial_crack / mm) + " mm + ligament " + fmt(ligament / mm) +
+                     " mm leave no room in a " + fmt(L / mm) + " mm specimen");
+  if (law && law->critical_opening() > 0)
+    regularize_rigid_law(*law, p.rigid_law_rise_fraction * law->critical_opening());
+}
+
 DcbModel::DcbModel(const law::Specimen& s, const law::Material& m, const law::TractionLaw& law,
                    double j_tip, const MpmParameters& p, const std::string& output_dir,
                    const std::function<void(const std::string&)>& progress)
     : spec_(s), mat_(m), user_law_(law), j_tip_(j_tip), prm_(p), out_dir_(output_dir),
       progress_(progress), elastic_(m) {
-  prm_.validate();
-  spec_.validate();
+  check_dcb_inputs(spec_, mat_, prm_, nullptr); // choose_law() regularizes (and checks) the law
   if (!(j_tip > 0) || !std::isfinite(j_tip))
     throw InputError("Cohesive law/J tip: must be positive (J/m^2), got " + fmt(j_tip));
   choose_law();
@@ -64,11 +85,8 @@ void DcbModel::setup_body() {
   const double c = prm_.cell_size;
   const double h = spec_.arm_thickness(), L = spec_.length;
   cell_ = c;
-  if (h < 2 * c)
-    throw InputError("MPM/Cell size: " + fmt(c / mm) +
-                     " mm leaves fewer than 2 cells through an arm of " + fmt(h / mm) +
-                     " mm; use at most " + fmt(h / 2 / mm) + " mm");
-  // Two cells through a cantilever bend it 5.7 % too stiff, three 3.7 % (tests/mpm,
+  // check_dcb_inputs() made sure of at least 2 cells through an arm. Two cells through a cantilever
+  // bend it 5.7 % too stiff, three 3.7 % (tests/mpm,
   // MpmCantilever.BendingNeedsCellsThroughTheThickness; docs/verification.md, "Thin arms").
   if (h < 3 * c * (1 - 1e-9))
     notes_.push_back("thin arm: MPM/Cell size " + fmt(c / mm) + " mm gives " + fmt(h / c, 3) +
@@ -84,10 +102,7 @@ void DcbModel::setup_body() {
   if (std::fabs(a0_ - spec_.initial_crack) > 1e-9 * c)
     notes_.push_back("initial crack tip placed on the nearest node column: " + fmt(a0_ / mm) +
                      " mm instead of " + fmt(spec_.initial_crack / mm) + " mm");
-  if (!(end_tip_ > a0_ + 2 * c))
-    throw InputError("MPM/End ligament: the tip could not grow: initial crack " +
-                     fmt(spec_.initial_crack / mm) + " mm + ligament " + fmt(ligament / mm) +
-                     " mm leave no room in a " + fmt(L / mm) + " mm specimen");
+  // check_dcb_inputs() made sure that end_tip_ > a0_ + 2 c (room for the tip to grow).
 
   const int ppc = prm_.particles_per_cell;
   const int n_arm = std::max(1, static_cast<int>(std::lround(h / c * ppc)));

@@ -2,6 +2,7 @@
 // docs/design.md section 5 names, and every kind of bad input ends with a one-line reason, a
 // non-zero exit and no summary.json.
 #include "fiberbridge/core/summary.h"
+#include "scene_runner.h"
 
 #include <gtest/gtest.h>
 
@@ -14,59 +15,7 @@
 #include <sys/wait.h>
 #include <vector>
 
-namespace fs = std::filesystem;
-using fiberbridge::Json;
-
-namespace {
-
-struct RunResult {
-  int exit_code;
-  std::string err;
-};
-
-/// Runs the executable in a fresh work directory named `name`; stderr captured.
-RunResult run(const std::string& name, const std::string& args) {
-  const fs::path dir = fs::path(FIBERBRIDGE_WORK_DIR) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  const std::string err_file = (dir / "stderr.txt").string();
-  const std::string cmd = "cd '" + dir.string() + "' && '" + FIBERBRIDGE_BIN + "' " + args +
-                          " > stdout.txt 2> '" + err_file + "'";
-  const int rc = std::system(cmd.c_str());
-  std::ifstream in(err_file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return {WEXITSTATUS(rc), s.str()};
-}
-
-Json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return Json::parse(in);
-}
-
-std::string data(const std::string& f) {
-  return std::string(FIBERBRIDGE_TEST_DATA) + "/" + f;
-}
-std::string source(const std::string& f) {
-  return std::string(FIBERBRIDGE_SOURCE_DIR) + "/" + f;
-}
-fs::path work(const std::string& name) {
-  return fs::path(FIBERBRIDGE_WORK_DIR) / name;
-}
-
-/// A failure must say why in one line naming `expect`, exit non-zero and leave no summary.
-void expect_clean_failure(const std::string& name, const std::string& args,
-                          const std::string& expect) {
-  const auto r = run(name, args);
-  EXPECT_NE(r.exit_code, 0) << args;
-  EXPECT_NE(r.err.find(expect), std::string::npos) << "stderr: " << r.err;
-  // The reason is on the last line; warnings or progress may come before it.
-  EXPECT_FALSE(r.err.empty());
-  for (const auto& entry : fs::recursive_directory_iterator(work(name)))
-    EXPECT_NE(entry.path().filename(), "summary.json") << "failed run left " << entry.path();
-}
-
-} // namespace
+using namespace fiberbridge::test;
 
 TEST(BadInput, MissingColumn) {
   expect_clean_failure("missing_column", "extract " + data("missing_column.csv") + " --out out",

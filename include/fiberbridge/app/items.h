@@ -12,33 +12,45 @@ void declare_bridging_section(dealii::ParameterHandler& prm);
 void declare_law_section(dealii::ParameterHandler& prm);
 void declare_specimen_sections(dealii::ParameterHandler& prm);
 
+// check_*: the item's sections read and validated before the first item runs (SceneItem::check).
+void check_extract_item(SceneContext& ctx);
 void run_extract_item(SceneContext& ctx);
+void check_fit_item(SceneContext& ctx);
 void run_fit_item(SceneContext& ctx);
+void check_rank_item(SceneContext& ctx);
 void run_rank_item(SceneContext& ctx);
+void check_bridging_item(SceneContext& ctx);
 void run_bridging_item(SceneContext& ctx);
 void declare_compare_section(dealii::ParameterHandler& prm);
+void check_compare_item(SceneContext& ctx);
 void run_compare_item(SceneContext& ctx);
 void declare_study_section(dealii::ParameterHandler& prm);
+void check_study_item(SceneContext& ctx);
 void run_study_item(SceneContext& ctx);
 void declare_test_section(dealii::ParameterHandler& prm);
+void check_reduce_item(SceneContext& ctx);
 void run_reduce_item(SceneContext& ctx);
 
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
 void declare_identify_section(dealii::ParameterHandler& prm);
+void check_identify_item(SceneContext& ctx);
 void run_identify_item(SceneContext& ctx);
 /// For compare: the identified law's simulations against the first record (identify_check).
 void check_identified_against_simulations(SceneContext& ctx);
 #endif
 #ifdef FIBERBRIDGE_HAVE_BEAM
 void declare_beam_section(dealii::ParameterHandler& prm);
+void check_beam_item(SceneContext& ctx);
 void run_beam_item(SceneContext& ctx);
 #endif
 #ifdef FIBERBRIDGE_HAVE_FEM
 void declare_fem_section(dealii::ParameterHandler& prm);
+void check_fem_item(SceneContext& ctx);
 void run_fem_item(SceneContext& ctx);
 #endif
 #ifdef FIBERBRIDGE_HAVE_MPM
 void declare_mpm_section(dealii::ParameterHandler& prm);
+void check_mpm_item(SceneContext& ctx);
 void run_mpm_item(SceneContext& ctx);
 #endif
 

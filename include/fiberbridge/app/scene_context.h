@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
 namespace fiberbridge::app {
@@ -50,6 +51,15 @@ struct SceneContext {
   /// Results of the simulations that ran, by model name ("fem", "mpm", "beam"), for compare.
   std::map<std::string, law::SimulationResult> results;
 
+  /// The items the scene runs: the checks before the first item (check_scene) decide from it
+  /// which sections will be used (the law section only when neither fit nor identify runs).
+  std::set<std::string> run_items;
+  /// True when the simulations get the Specimen and Material sections (no identify in the run).
+  bool specimen_from_section() const { return !run_items.count("identify"); }
+  /// The law when it is known before any item runs (the Cohesive law section, built and checked),
+  /// nullptr when fit or identify will provide it.
+  const law::TractionLaw* law_known_before_run();
+
   /// The law and J_tip a simulation uses (fit's output, else the Cohesive law section).
   law::TractionLawPtr law();
   double j_tip();
@@ -63,13 +73,20 @@ private:
   double section_j_tip_ = 0;
 };
 
-/// One scene item: declares its prm section(s) and runs. Simulation items return their result
-/// through ctx.results[name]; all items add their block to ctx.summary.
+/// One scene item: declares its prm section(s), checks them and runs. Simulation items return
+/// their result through ctx.results[name]; all items add their block to ctx.summary.
 struct SceneItem {
   std::string name;
   void (*declare)(dealii::ParameterHandler&); ///< may be nullptr (no own section)
+  /// Reads and validates every section the item will use, as `run` reads them, without running
+  /// or writing anything; throws InputError naming the section and key. The scene calls it for
+  /// every item of the run before the first item runs.
+  void (*check)(SceneContext&);
   void (*run)(SceneContext&);
 };
+
+/// Calls the check of every item in ctx.run_items (which it needs filled), in item order.
+void check_scene(SceneContext& ctx);
 
 /// The registry, in the order items run when a scene lists them.
 const std::vector<SceneItem>& scene_items();

@@ -69,6 +69,12 @@ struct BeamParameters {
   void validate(const std::string& context = "Beam") const;
 };
 
+/// The checks simulate_dcb makes before it solves anything (specimen, material, parameters, a
+/// ligament longer than the minimum ligament), so that a scene can make them before its first item
+/// runs. Throws InputError naming the section and key.
+void check_dcb_inputs(const law::Specimen& specimen, const law::Material& material,
+                      const BeamParameters& parameters);
+
 /// Runs the crack from the notch (tip and root at a0) until steady state or the ligament runs
 /// out. Steady state: the root has moved by `steady_state_window` and R_energy is flat over it
 /// and equal to J_ff (self-similar growth); G_ss is then its mean. If the ligament runs out first

@@ -1,14 +1,16 @@
 #pragma once
 // CSV with a header line; units live in the column names (delta_mm, R_J_m2, sigma_kPa).
-// Lines starting with '#' are comments (provenance of bundled data goes there).
+// Lines starting with '#' are comments (provenance of bundled data goes there); blank lines are
+// skipped; CRLF line ends and a UTF-8 byte-order mark are accepted; a cell in double quotes may
+// hold commas ("" inside it is one quote) but must end on its line.
 #include <cstddef>
 #include <string>
 #include <vector>
 
 namespace fiberbridge {
 
-/// A numeric CSV table read from a file. Every cell must be a finite number or empty
-/// (empty reads as NaN only where `allow_empty` was requested for that column).
+/// A CSV table read from a file: every data row has as many cells as the header (a trailing comma
+/// is an empty last cell); numeric() requires finite numbers, text() takes cells as they are.
 class CsvTable {
 public:
   /// Reads `path`; throws InputError naming file and line for malformed content.

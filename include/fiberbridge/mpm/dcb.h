@@ -21,6 +21,13 @@
 
 namespace fiberbridge::mpm {
 
+/// The checks DcbModel makes before it builds anything (parameters, specimen, material, at least
+/// two cells through an arm, room for the tip to grow before the end ligament, and with `law`
+/// given the elastic rise of a rigid law), so that a scene can make them before its first item
+/// runs. Throws InputError naming the section and key.
+void check_dcb_inputs(const law::Specimen& specimen, const law::Material& material,
+                      const MpmParameters& params, const law::TractionLaw* law);
+
 /// The specimen model: body, crack, loading block and tip criterion. run() is simulate_dcb;
 /// step() lets tests load the specimen without growth and read its fields.
 class DcbModel {

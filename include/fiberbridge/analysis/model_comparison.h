@@ -1,7 +1,8 @@
 #pragma once
 // Comparing simulations with each other and closing the loop through the extraction method
-// (docs/design.md section 3; issue "Cross-validation and studies"). Plain functions of
-// SimulationResult so that they can be tested without running a model.
+// (docs/design.md section 3): analysis of law::SimulationResult, whichever model produced it, so
+// plain functions that are tested without running a model (tests/analysis/
+// model_comparison_tests.cc). The scene item `compare` (app/item_compare.cc) writes them out.
 #include "fiberbridge/analysis/inverse.h"
 #include "fiberbridge/law/rcurve.h"
 #include "fiberbridge/law/traction_law.h"
@@ -9,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace fiberbridge::app {
+namespace fiberbridge::analysis {
 
 /// Differences between two models' R(a) curves.
 struct PairwiseDifference {
@@ -32,8 +33,8 @@ struct ClosedLoopRow {
   double peak_kPa = 0, peak_true_kPa = 0;
   double delta_at_peak_mm = 0, delta_at_peak_true_mm = 0;
   double area_J_m2 = 0, area_true_J_m2 = 0;
-  double curve_rel_l2 = 0;      ///< ||sigma_recovered - sigma_true|| / ||sigma_true|| on the grid
-  analysis::ExtractedLaws laws; ///< the recovered laws (both methods) on the grid
+  double curve_rel_l2 = 0; ///< ||sigma_recovered - sigma_true|| / ||sigma_true|| on the grid
+  ExtractedLaws laws;      ///< the recovered laws (both methods) on the grid
 };
 
 /// Builds R(delta_root) from the rows where delta_root increases (the zone development and the
@@ -43,4 +44,4 @@ struct ClosedLoopRow {
 std::vector<ClosedLoopRow> closed_loop(const law::SimulationResult& r, const law::TractionLaw& law,
                                        double j_tip, int n, int k);
 
-} // namespace fiberbridge::app
+} // namespace fiberbridge::analysis

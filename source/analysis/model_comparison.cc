@@ -1,4 +1,4 @@
-#include "fiberbridge/app/comparison.h"
+#include "fiberbridge/analysis/model_comparison.h"
 
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-namespace fiberbridge::app {
+namespace fiberbridge::analysis {
 
 namespace {
 
@@ -116,7 +116,7 @@ std::vector<ClosedLoopRow> closed_loop(const law::SimulationResult& r, const law
   const auto [true_peak, true_peak_delta] = law.peak();
   std::vector<ClosedLoopRow> rows;
   for (const std::string source : {"R_energy", "R_eq2"}) {
-    analysis::RDeltaCurve c;
+    RDeltaCurve c;
     c.n_replicates = 1;
     // R is flat at J_tip before the first advance (no zone yet): start the curve there.
     c.delta.push_back(0);
@@ -141,7 +141,7 @@ std::vector<ClosedLoopRow> closed_loop(const law::SimulationResult& r, const law
       c.R.push_back(c.R.back());
     }
     c.R_std.assign(c.R.size(), 0.0);
-    const auto laws = analysis::extract_cohesive_laws(c, dc, n, k);
+    const auto laws = extract_cohesive_laws(c, dc, n, k);
     for (const std::string method : {"eq6", "dRdd"}) {
       const auto& s = method == "eq6" ? laws.sigma_eq6 : laws.sigma_dRdd;
       ClosedLoopRow row;
@@ -168,4 +168,4 @@ std::vector<ClosedLoopRow> closed_loop(const law::SimulationResult& r, const law
   return rows;
 }
 
-} // namespace fiberbridge::app
+} // namespace fiberbridge::analysis

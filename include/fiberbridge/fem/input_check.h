@@ -1,0 +1,15 @@
+#pragma once
+// The input checks of the FEM DCB model that need no mesh, so that a scene can make them before
+// its first item runs (a bad FEM value must not surface after minutes of other simulations).
+#include "fiberbridge/fem/dcb_simulation.h"
+
+namespace fiberbridge::fem {
+
+/// What the engine (distributed_dcb.templates.h) rejects before it solves anything: the
+/// specimen, material and parameters; the 3D orthotropic compliance; a notch spanning enough
+/// elements and a ligament holding the tip J domains; and, with `law` given, the elastic rise of
+/// a rigid law. Throws InputError naming the section and key.
+void check_dcb_inputs(const law::Specimen& specimen, const law::Material& material,
+                      const FemParameters& parameters, const law::TractionLaw* law);
+
+} // namespace fiberbridge::fem

@@ -1,0 +1,36 @@
+#include "fiberbridge/fem/input_check.h"
+
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
+#include "fiberbridge/fem/dcb_common.h"
+
+namespace fiberbridge::fem {
+
+void check_dcb_inputs(const law::Specimen& specimen, const law::Material& material,
+                      const FemParameters& parameters, const law::TractionLaw* law) {
+  specimen.validate();
+  material.validate();
+  parameters.validate();
+  if (parameters.dimension == 3)
+    orthotropic_stiffness<3>(material, parameters);
+  else
+    orthotropic_stiffness<2>(material, parameters);
+  const DcbMeshLines lines = dcb_mesh_lines(specimen, parameters);
+  // The engine's first tip is the notch end a0 (a mesh line); its growth loop needs the tip strip
+  // and one arm thickness of ligament ahead of it for the J domains.
+  const double L = specimen.length, a0 = specimen.initial_crack, h = specimen.arm_thickness();
+  const double needed = parameters.tip_domain_elements * lines.dx + h;
+  if (a0 + needed > L + 1e-9 * L)
+    throw InputError(
+        "Specimen: the ligament (Length - Initial crack = " + fmt((L - a0) / units::mm) +
+        " mm) is shorter than the tip J domains need (FEM/Tip J domain half-width "
+        "elements + one arm thickness = " +
+        fmt(needed / units::mm) + " mm)");
+  if (law) {
+    std::unique_ptr<law::ElasticRiseLaw> holder;
+    std::vector<std::string> notes;
+    insertable_law(*law, material, parameters, holder, notes);
+  }
+}
+
+} // namespace fiberbridge::fem
