@@ -51,11 +51,12 @@ void BeamSection::declare_parameters(dealii::ParameterHandler& prm) {
                     "Stop when the ligament ahead of the tip is shorter than this, in mm; 0 = the "
                     "specimen height.");
   prm.declare_entry("Steady state window", default_text(d.steady_state_window / mm), Double(0),
-                    "Steady state is declared when the notch root has advanced this far (mm) "
-                    "and R_energy is flat over it; G_ss is its mean there.");
+                    "Steady state: after the notch root moved, R_J has stayed within the plateau "
+                    "tolerance over at least this much crack growth [mm]; G_ss is its mean there "
+                    "(the same rule and key in the Beam, FEM and MPM sections).");
   prm.declare_entry("Plateau tolerance", default_text(d.plateau_tolerance), Double(0, 1),
-                    "Relative difference allowed between the mean R_energy of the two halves "
-                    "of the steady-state window, and between R_energy and J_ff over it.");
+                    "Relative spread (max - min over mean) of R_J over the steady-state window "
+                    "accepted as a plateau.");
   prm.declare_entry("Newton tolerance", default_text(d.newton_tolerance), Double(0, 0.01),
                     "Relative residual (to the initiation load) and relative tip-opening error "
                     "at which Newton stops.");

@@ -52,16 +52,23 @@ void MpmSection::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Tip J domain", std::to_string(d.tip_j_cells), Double(1),
                     "The tip J domain integral weights a frame from this many cells around the tip "
                     "to two cells farther.");
-  prm.declare_entry("Rigid law rise fraction", std::to_string(d.rigid_law_rise_fraction),
-                    Double(0, 0.1),
-                    "Rigid laws (linear or exponential softening) get an elastic rise over this "
-                    "fraction of delta_c, so that the explicit time step stays finite.");
+  prm.declare_entry("Rigid law rise fraction", "", dealii::Patterns::Anything(),
+                    "Deprecated and ignored: rigid laws (linear or exponential softening) are "
+                    "inserted extrinsically in every model (a new segment starts at sigma(0+)); "
+                    "a value leaves a note in the run's notes.");
   prm.declare_entry("End ligament", "0", Double(0),
                     "Stop when the ligament ahead of the tip would be shorter than this, in mm; "
                     "0 = the specimen height.");
   prm.declare_entry("Steady growth", "0", Double(0),
                     "Stop after the notch root has moved this far in mm (0 = run to the end "
                     "ligament).");
+  prm.declare_entry("Steady state window", std::to_string(d.steady_state_window / mm), Double(0),
+                    "Steady state: after the notch root moved, R_J has stayed within the plateau "
+                    "tolerance over at least this much crack growth [mm]; G_ss is its mean there "
+                    "(the same rule and key in the Beam, FEM and MPM sections).");
+  prm.declare_entry("Plateau tolerance", std::to_string(d.plateau_tolerance), Double(0, 1),
+                    "Relative spread (max - min over mean) of R_J over the steady-state window "
+                    "accepted as a plateau.");
   prm.declare_entry("Maximum steps", std::to_string(d.max_steps), Integer(1),
                     "Safety bound on the number of explicit time steps.");
   prm.declare_entry("Threads", std::to_string(d.threads), Integer(1, 256),
@@ -87,9 +94,14 @@ void MpmSection::parse_parameters(dealii::ParameterHandler& prm) {
   growth_step_cells = prm.get_integer("Growth step");
   j_window_periods = prm.get_double("J window periods");
   tip_j_cells = prm.get_double("Tip J domain");
-  rigid_law_rise_fraction = prm.get_double("Rigid law rise fraction");
+  if (!prm.get("Rigid law rise fraction").empty())
+    deprecation_notes.push_back("MPM/Rigid law rise fraction is deprecated and ignored: rigid "
+                                "laws are inserted extrinsically in every model (no elastic "
+                                "rise; the same discrete law as the beam and the FEM)");
   end_ligament = prm.get_double("End ligament") * mm;
   steady_growth = prm.get_double("Steady growth") * mm;
+  steady_state_window = prm.get_double("Steady state window") * mm;
+  plateau_tolerance = prm.get_double("Plateau tolerance");
   max_steps = prm.get_integer("Maximum steps");
   threads = prm.get_integer("Threads");
   vtu_every_advances = prm.get_integer("VTU every advances");

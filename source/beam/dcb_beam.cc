@@ -7,6 +7,8 @@
 #include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/numerical_fault.h"
+#include "fiberbridge/law/rigid_law.h"
+#include "fiberbridge/law/steady_state.h"
 
 #include <algorithm>
 #include <array>
@@ -115,13 +117,9 @@ private:
   /// keeps the ligament's tip deflection (hence the tip J) with the same bridging forces;
   /// `linear_energy` gets the small-rotation strain energy of the same arm.
   ElasticaState finite_free_arm(double& load, double& linear_energy) const;
-  /// R_energy's plateau over the last steady-state window after the root moved at state
-  /// `moved`, or NaN if the growth is not yet self-similar there.
-  double steady_state_plateau(const std::vector<RCurvePoint>& rc, const std::vector<double>& D,
-                              std::size_t moved) const;
   double section_j(const std::vector<double>& u, std::size_t element,
                    std::vector<std::pair<std::size_t, double>>* grad = nullptr) const;
-  void finish(SimulationResult& result, const std::vector<double>& dissipation_measured);
+  void finish(SimulationResult& result);
   void note(SimulationResult& r, const std::string& s) const { r.notes.push_back(s); }
   void say(const std::string& s) const {
     if (progress_)
@@ -547,49 +545,27 @@ ElasticaState DcbBeamSolver::finite_free_arm(double& load, double& linear_energy
                          " N m on the rotated free arm at a = " + fmt(l / mm) + " mm");
 }
 
-double DcbBeamSolver::steady_state_plateau(const std::vector<RCurvePoint>& rc,
-                                           const std::vector<double>& D, std::size_t moved) const {
-  // Self-similar growth: over a window of root advance, R_energy (the slope of the measured
-  // dissipation D) is the same in both halves and equals the far-field J (Eq. 2 becomes Eq. 1
-  // only then). A zone that shrinks or unloads near the far end can keep R_energy flat for a
-  // while without it being G_ss, hence the second condition.
-  const std::size_t k = rc.size() - 1;
-  const double window = prm_.steady_state_window;
-  if (rc[k].root - rc[moved].root < window)
-    return law::not_available;
-  std::size_t ks = moved;
-  while (rc[ks + 1].root <= rc[k].root - window)
-    ++ks;
-  std::size_t km = ks;
-  while (km < k && rc[km].a < 0.5 * (rc[ks].a + rc[k].a))
-    ++km;
-  if (!(km > ks && km < k))
-    return law::not_available;
-  auto mean_r = [&](std::size_t i, std::size_t j) {
-    return (D[j] - D[i]) / (arm_.width * (rc[j].a - rc[i].a));
-  };
-  const double all = mean_r(ks, k), first = mean_r(ks, km), second = mean_r(km, k);
-  double j_ff = 0;
-  for (std::size_t i = ks; i <= k; ++i)
-    j_ff += rc[i].J_ff / static_cast<double>(k - ks + 1);
-  const double tol = prm_.plateau_tolerance * all;
-  return std::abs(second - first) <= tol && std::abs(all - j_ff) <= tol ? all : law::not_available;
-}
-
 SimulationResult DcbBeamSolver::run() {
   const auto start = std::chrono::steady_clock::now();
   SimulationResult result;
   result.model = "beam";
   result.n_dofs_or_particles = static_cast<long>(element_K_.size());
+  // A rigid law acts as given from sigma(0+) at the tip node: the one rule of every model.
+  if (const std::string n = law::rigid_law_insertion_note(*law_); !n.empty())
+    note(result, n);
   const double a0 = specimen_.initial_crack, L = specimen_.length;
   const double dc = law_->critical_opening();
   const double h_e = length_[1];
   const std::size_t step = std::max<std::size_t>(1, std::lround(prm_.tip_advance / h_e));
   const std::size_t last_node = x_.size() - 1;
 
-  // Measured dissipation W - U_rec per recorded state; R_energy is its derivative in a.
-  std::vector<double> dissipation;
   double work = 0;
+  law::SteadyStateRule rule; // the shared rule (law::find_steady_state), Beam section's keys
+  rule.window = prm_.steady_state_window;
+  rule.tolerance = prm_.plateau_tolerance;
+  rule.root_move = 1e-12 * L;
+  const bool bridging = dc > 0;
+  law::SteadyState steady;
   std::size_t move_index = 0; // first state whose root has moved
   bool moved = false;
   std::string stop_reason;
@@ -626,7 +602,6 @@ SimulationResult DcbBeamSolver::run() {
       work += 0.5 * (p.load + q.load) * (p.load_point_opening - q.load_point_opening);
     }
     p.external_work = work;
-    dissipation.push_back(work - p.strain_energy - p.zone_recoverable);
     law::check_rcurve_point(p); // NaN/Inf ends the run naming the column
     result.rcurve.push_back(p);
     // Small rotations: measure the load error against the elastica at the state of largest
@@ -655,13 +630,10 @@ SimulationResult DcbBeamSolver::run() {
       say("beam: a = " + fmt(p.a / mm) + " mm, load " + fmt(p.load) + " N, delta_root " +
           fmt(p.delta_root / mm) + " mm");
 
-    if (moved && !result.reached_steady_state) {
-      result.G_ss = steady_state_plateau(result.rcurve, dissipation, move_index);
-      if (std::isfinite(result.G_ss)) {
-        result.reached_steady_state = true;
-        if (!(prm_.final_crack_length > 0))
-          break;
-      }
+    if (!steady.reached) {
+      steady = law::find_steady_state(result.rcurve, a0, arm_.width, bridging, rule);
+      if (steady.reached && !(prm_.final_crack_length > 0))
+        break;
     }
     if (prm_.final_crack_length > 0 && x_[tip] >= prm_.final_crack_length)
       break;
@@ -704,6 +676,8 @@ SimulationResult DcbBeamSolver::run() {
     for (std::size_t k = move_index; k < result.rcurve.size(); ++k)
       shortest_zone = std::min(shortest_zone, result.rcurve[k].zone_length);
   const double step_length = static_cast<double>(step) * h_e;
+  if (!steady.reached)
+    steady = law::find_steady_state(result.rcurve, a0, arm_.width, bridging, rule);
   if (shortest_zone < 4 * step_length) {
     result.reached_steady_state = false;
     result.G_ss = law::not_available;
@@ -714,7 +688,10 @@ SimulationResult DcbBeamSolver::run() {
                      fmt(step_length / mm) + " mm; G_ss is not reported. Use about " +
                      fmt(wanted, 2) + " elements or more and a tip advance of at most " +
                      fmt(shortest_zone / 8 / mm, 2) + " mm (Beam section).");
-  } else if (!result.reached_steady_state && !result.rcurve.empty()) {
+  } else {
+    law::report_steady_state(result, steady, rule, "Beam");
+  }
+  if (!steady.reached && shortest_zone >= 4 * step_length) {
     const auto& last = result.rcurve.back();
     if (!moved && !ligament_ran_out)
       note(result, "no steady state before the stop: the notch root had not moved (delta_root = " +
@@ -726,44 +703,17 @@ SimulationResult DcbBeamSolver::run() {
                        fmt(last.delta_root / mm) + " mm is still below delta_c = " + fmt(dc / mm) +
                        " mm (zone " + fmt(last.zone_length / mm) +
                        " mm). A longer specimen is needed to reach G_ss.");
-    else {
-      const auto& mv = result.rcurve[move_index];
-      // R_J needs no self-similarity (Eq. 1 holds for any zone): its mean after the root moved
-      // is the steady-state toughness the law implies, reported with the flag left false.
-      double sum = 0;
-      for (std::size_t i = move_index; i < result.rcurve.size(); ++i)
-        sum += result.rcurve[i].R_J;
-      result.G_ss = sum / static_cast<double>(result.rcurve.size() - move_index);
-      note(result, "G_ss = " + fmt(result.G_ss) +
-                       " J/m^2 is the mean R_J after the root moved, not an R_energy plateau");
-      note(result, "no steady state: the notch root moved at a = " + fmt(mv.a / mm) + " mm (zone " +
-                       fmt(mv.zone_length / mm) + " mm, ligament " +
-                       fmt((specimen_.length - mv.a) / mm) +
-                       " mm) but R_energy did not settle, flat within " +
-                       fmt(prm_.plateau_tolerance * 100) + " % and equal to J_ff (" + fmt(mv.J_ff) +
-                       " J/m^2 when the root moved), over a " + fmt(prm_.steady_state_window / mm) +
-                       " mm root advance before the stop" +
-                       (ligament_ran_out ? std::string(": the zone is too long for this specimen "
-                                                       "to grow it self-similarly")
-                                         : std::string()));
-    }
+    else if (ligament_ran_out)
+      note(result, "the ligament ran out before R_J settled: the zone is too long for this "
+                   "specimen to grow it to a plateau");
   }
-  finish(result, dissipation);
+  finish(result);
   return result;
 }
 
-void DcbBeamSolver::finish(SimulationResult& result, const std::vector<double>& D) {
+void DcbBeamSolver::finish(SimulationResult& result) {
   auto& rc = result.rcurve;
-  const double B = arm_.width;
-  // R_energy = dD/(B da) with D = W - U_rec: central differences (second order in the tip
-  // advance), one-sided at the two ends.
-  for (std::size_t k = 0; k < rc.size(); ++k) {
-    if (rc.size() < 2)
-      break;
-    const std::size_t i = k == 0 ? 0 : k - 1;
-    const std::size_t j = k + 1 < rc.size() ? k + 1 : k;
-    rc[k].R_energy = (D[j] - D[i]) / (B * (rc[j].a - rc[i].a));
-  }
+  law::fill_r_energy(rc, arm_.width); // d(W - U_rec)/(B da), the shared stencil
   // Unstable growth under displacement control: the states where the load-point opening is
   // below an earlier one would be passed in one jump of a displacement-controlled test.
   std::size_t unstable = 0;

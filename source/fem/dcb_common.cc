@@ -2,6 +2,7 @@
 
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
+#include "fiberbridge/law/rigid_law.h"
 
 #include <deal.II/lac/full_matrix.h>
 
@@ -66,25 +67,18 @@ SymmetricTensor<4, 3> orthotropic_stiffness<3>(const law::Material& m, const Fem
   return T;
 }
 
-const law::TractionLaw* insertable_law(const law::TractionLaw& law, const law::Material& material,
-                                       const FemParameters& p,
-                                       std::unique_ptr<law::ElasticRiseLaw>& holder,
+const law::TractionLaw* insertable_law(const law::TractionLaw& law,
+                                       const law::Material& /* no elastic rise */,
+                                       const FemParameters& /* no elastic rise */,
+                                       std::unique_ptr<law::ElasticRiseLaw>& /* stays empty */,
                                        std::vector<std::string>& notes) {
-  if (!(law.critical_opening() > 0 && law.rigid_at_zero_opening()))
-    return &law;
-  const double delta_e = law::ElasticRiseLaw::rise_end_for_slope(
-      law, p.rigid_law_stiffness_factor * material.E_T / p.element_size);
-  const auto kinks = law.kinks();
-  const double first = kinks.size() > 1 ? kinks[1] : law.critical_opening();
-  if (!(delta_e > 0 && delta_e < 0.5 * first))
-    throw InputError("FEM/Rigid law stiffness factor: the elastic rise of the " + law.name() +
-                     " law would reach " + fmt(delta_e / units::mm) +
-                     " mm, not small against its first kink; raise the factor");
-  holder = std::make_unique<law::ElasticRiseLaw>(law, delta_e);
-  notes.push_back("rigid " + law.name() + " law regularized with an elastic rise to " +
-                  fmt(holder->delta_e() / units::mm) + " mm (area " +
-                  fmt(100 * (holder->area() / law.area() - 1), 3) + " %)");
-  return holder.get();
+  // Extrinsic insertion (law/rigid_law.h): the released segment carries the law as given from
+  // sigma(0+). The tie held it closed until the release; afterwards the tip node is tied, so the
+  // traction there acts on both sides of one node and cancels, and the tip J's crack-face term
+  // integrates the law's sigma(0+) at the tip point (the rise's zero there cost up to 2 % of R).
+  if (const std::string note = law::rigid_law_insertion_note(law); !note.empty())
+    notes.push_back(note);
+  return &law;
 }
 
 DcbMeshLines dcb_mesh_lines(const law::Specimen& specimen, const FemParameters& p) {
@@ -189,38 +183,12 @@ double note_small_strain_bound(law::SimulationResult& result) {
   return worst;
 }
 
-bool check_steady_state(law::SimulationResult& result, const std::vector<double>& dissipated,
-                        double first_root_move, const FemParameters& p) {
-  const auto& rc = result.rcurve;
-  const auto& pt = rc.back();
-  if (pt.a - first_root_move < p.steady_state_window)
-    return false;
-  double lo = pt.R_J, hi = pt.R_J;
-  std::size_t i0 = rc.size() - 1;
-  while (i0 > 0 && pt.a - rc[i0 - 1].a <= p.steady_state_window * (1 + 1e-9)) {
-    --i0;
-    lo = std::min(lo, rc[i0].R_J);
-    hi = std::max(hi, rc[i0].R_J);
-  }
-  if (hi - lo > p.plateau_tolerance * std::abs(pt.R_J))
-    return false;
-  result.reached_steady_state = true;
-  // G_ss from R_J: every record is a state with tip J = J_tip. R_energy over the same window
-  // carries the sawtooth of discrete advances (each release happens at fixed opening; in the
-  // LEFM limit the energy per advance is J_tip (1 - 2 da/(a + chi h))) and the discreteness of
-  // the root failures; it is reported beside.
-  double sum = 0;
-  for (std::size_t i = i0; i < rc.size(); ++i)
-    sum += rc[i].R_J;
-  result.G_ss = sum / double(rc.size() - i0);
-  const double g_energy = (dissipated.back() - dissipated[i0]) / (pt.a - rc[i0].a);
-  result.notes.push_back("steady state at a = " + fmt(pt.a / units::mm) + " mm: R_J spread " +
-                         fmt(100 * (hi - lo) / pt.R_J, 3) + " % over the last " +
-                         fmt((pt.a - rc[i0].a) / units::mm) +
-                         " mm; G_ss = mean R_J there; R_energy over the window (dissipation "
-                         "per growth) " +
-                         fmt(g_energy) + " J/m^2");
-  return true;
+law::SteadyStateRule steady_state_rule(const FemParameters& p, const law::Specimen& specimen) {
+  law::SteadyStateRule rule;
+  rule.window = p.steady_state_window;
+  rule.tolerance = p.plateau_tolerance;
+  rule.root_move = 1e-9 * specimen.length;
+  return rule;
 }
 
 } // namespace fiberbridge::fem

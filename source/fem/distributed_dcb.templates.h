@@ -47,6 +47,7 @@
 #include "fiberbridge/fem/dcb_common.h"
 #include "fiberbridge/fem/distributed_dcb.h"
 #include "fiberbridge/law/numerical_fault.h"
+#include "fiberbridge/law/steady_state.h"
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/index_set.h>
@@ -161,7 +162,8 @@ private:
   double stored_energy() const;
   double load_per_width();
   law::RCurvePoint record_advance();
-  bool reached_steady_state(double first_root_move);
+  /// The shared rule (law::find_steady_state); reports and returns true once reached.
+  bool reached_steady_state(bool final_state);
   void output_fields(unsigned advance);
   void write_interface_csv() const;
   void report(const std::string& line) const {
@@ -254,7 +256,6 @@ private:
 
   law::SimulationResult result_;
   DistributedRunInfo info_;
-  std::vector<double> dissipated_;
   double max_opening_behind_tip_ = 0;
   double tip_dissipated_ = 0;                   ///< energy released by the releases [J/m]
   double j_after_release_ = law::not_available; ///< tip J right after the last release
@@ -1565,11 +1566,7 @@ law::RCurvePoint DistributedDcbModel<dim>::record_advance() {
   pt.external_work = work_ * B;
   pt.strain_energy = U * B;
   pt.zone_recoverable = U_zone * B;
-  const double dissipated = work_ - U - U_zone;
-  pt.dissipated = dissipated * B;
-  if (!result_.rcurve.empty())
-    pt.R_energy = (dissipated - dissipated_.back()) / (x_tip - result_.rcurve.back().a);
-  dissipated_.push_back(dissipated);
+  pt.dissipated = (work_ - U - U_zone) * B; // R_energy: law::fill_r_energy at the end of run()
   details_.zone_dissipated.push_back(interface_->dissipated_energy() / width_ * B);
   details_.tip_dissipated.push_back(tip_dissipated_ * B);
   details_.j_after_release.push_back(j_after_release_);
@@ -1579,8 +1576,13 @@ law::RCurvePoint DistributedDcbModel<dim>::record_advance() {
 }
 
 template <int dim>
-bool DistributedDcbModel<dim>::reached_steady_state(double first_root_move) {
-  return check_steady_state(result_, dissipated_, first_root_move, prm_);
+bool DistributedDcbModel<dim>::reached_steady_state(bool final_state) {
+  const auto rule = steady_state_rule(prm_, specimen_);
+  const auto s = law::find_steady_state(result_.rcurve, specimen_.initial_crack, specimen_.width,
+                                        law_->critical_opening() > 0, rule);
+  if (s.reached || final_state)
+    law::report_steady_state(result_, s, rule, "FEM");
+  return s.reached;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1702,10 +1704,7 @@ law::SimulationResult DistributedDcbModel<dim>::run() {
             "no steady state: zone longer than ligament (the notch root never moved; the tip "
             "reached " +
             fmt(x_st_[tip_] / units::mm) + " mm)");
-      else
-        result_.notes.push_back("no steady state: R_J did not settle within " +
-                                fmt(prm_.steady_state_window / units::mm) +
-                                " mm before the ligament ran out");
+      reached_steady_state(true); // not reached: the note and G_ss of the shared rule
       break;
     }
     load_to_critical();
@@ -1718,7 +1717,7 @@ law::SimulationResult DistributedDcbModel<dim>::run() {
       report("fem: a = " + fmt(pt.a / units::mm) + " mm, root " + fmt(pt.root / units::mm) +
              " mm, opening " + fmt(pt.load_point_opening / units::mm) + " mm, load " +
              fmt(pt.load) + " N, J_tip " + fmt(pt.J_tip) + ", R_J " + fmt(pt.R_J) + " J/m^2");
-    if (first_root_move >= 0 && reached_steady_state(first_root_move))
+    if (reached_steady_state(false))
       break;
     ++advance;
     if (prm_.output_every > 0 && advance % prm_.output_every == 0)
@@ -1732,6 +1731,7 @@ law::SimulationResult DistributedDcbModel<dim>::run() {
   }
   output_fields(advance + 1);
   write_interface_csv();
+  law::fill_r_energy(result_.rcurve, specimen_.width);
 
   const auto kinks = law_->kinks();
   const double rise = kinks.size() > 1 ? kinks[1] : law_->critical_opening();

@@ -2,6 +2,9 @@
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/fem/dcb_simulation.h"
 
+#include <stdexcept>
+#include <string>
+
 #include <deal.II/base/parameter_handler.h>
 
 namespace fiberbridge::fem {
@@ -72,17 +75,24 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Contact stiffness factor", "10", Double(0),
                     "Frictionless contact penalty on closed crack faces = factor * E_T / element "
                     "size [Pa/m].");
-  prm.declare_entry("Rigid law stiffness factor", "10", Double(0),
-                    "Laws with sigma(0) > 0 (linear, exponential) get an elastic rise of slope "
-                    "factor * E_T / element size; the area change is reported in the notes.");
+  prm.declare_entry("Rigid law stiffness factor", "", dealii::Patterns::Anything(),
+                    "Deprecated and ignored: rigid laws (linear, exponential) are inserted "
+                    "extrinsically in every model (a released segment starts at sigma(0+)); a "
+                    "value leaves a note in the run's notes.");
   prm.declare_entry("Tip J domain half-width", "4", Integer(1),
                     "Half-width of the full-height strip around the tip used for the tip J "
                     "domain integral, in elements.");
-  prm.declare_entry("Steady-state window", "10", Double(0),
-                    "Crack growth after the notch root first moves over which the R plateau is "
-                    "judged [mm].");
+  // The steady-state rule shared by every model (law::find_steady_state), under the same key
+  // names in the Beam, FEM and MPM sections.
+  prm.declare_entry("Steady state window", "10", Double(0),
+                    "Steady state: after the notch root moved, R_J has stayed within the plateau "
+                    "tolerance over at least this much crack growth [mm]; G_ss is its mean there.");
+  prm.declare_entry("Steady-state window", "", dealii::Patterns::Anything(),
+                    "Deprecated name of Steady state window [mm]; still accepted, with a note in "
+                    "the run's notes.");
   prm.declare_entry("Plateau tolerance", "0.01", Double(0, 1),
-                    "Relative spread of R_J over the window accepted as steady state.");
+                    "Relative spread (max - min over mean) of R_J over the steady-state window "
+                    "accepted as a plateau.");
   prm.declare_entry("Output every", "0", Integer(0),
                     "Write VTU every N tip advances (0: only the final state).");
 }
@@ -118,9 +128,26 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   nonlinear_solver =
       prm.get("Nonlinear solver") == "kinsol" ? NonlinearSolver::kinsol : NonlinearSolver::newton;
   contact_stiffness_factor = prm.get_double("Contact stiffness factor");
-  rigid_law_stiffness_factor = prm.get_double("Rigid law stiffness factor");
+  if (!prm.get("Rigid law stiffness factor").empty())
+    deprecation_notes.push_back("FEM/Rigid law stiffness factor is deprecated and ignored: rigid "
+                                "laws are inserted extrinsically in every model (no elastic "
+                                "rise; the same discrete law as the beam and the MPM)");
   tip_domain_elements = prm.get_integer("Tip J domain half-width");
-  steady_state_window = prm.get_double("Steady-state window") * units::mm;
+  steady_state_window = prm.get_double("Steady state window") * units::mm;
+  if (const std::string old = prm.get("Steady-state window"); !old.empty()) {
+    std::size_t used = 0;
+    double v = 0;
+    try {
+      v = std::stod(old, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || old.find_first_not_of(" \t", used) != std::string::npos)
+      throw InputError("FEM/Steady-state window: expected a length in mm, got '" + old + "'");
+    steady_state_window = v * units::mm;
+    deprecation_notes.push_back("FEM/Steady-state window is deprecated: use FEM/Steady state "
+                                "window (the same key in the Beam, FEM and MPM sections)");
+  }
   plateau_tolerance = prm.get_double("Plateau tolerance");
   output_every = prm.get_integer("Output every");
   validate();
@@ -143,9 +170,8 @@ void FemParameters::validate() const {
           "must lie in (0, 1e-3)");
   require(max_newton_iterations >= 1, "Maximum Newton iterations", "must be >= 1");
   require(contact_stiffness_factor > 0, "Contact stiffness factor", "must be positive");
-  require(rigid_law_stiffness_factor > 0, "Rigid law stiffness factor", "must be positive");
   require(tip_domain_elements >= 1, "Tip J domain half-width", "must be >= 1 element");
-  require(steady_state_window > 0, "Steady-state window", "must be positive (mm)");
+  require(steady_state_window > 0, "Steady state window", "must be positive (mm)");
   require(plateau_tolerance > 0, "Plateau tolerance", "must be positive");
   require(dimension == 2 || dimension == 3, "Dimension", "must be 2 or 3");
   require(G_LR_over_E_L > 0, "G_LR over E_L", "must be positive");

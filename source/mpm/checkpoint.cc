@@ -60,9 +60,10 @@ std::vector<std::pair<std::string, std::string>> DcbModel::inputs() const {
       {"MPM/Growth step", std::to_string(p.growth_step_cells)},
       {"MPM/J window periods", number(p.j_window_periods, "")},
       {"MPM/Tip J domain", number(p.tip_j_cells, "")},
-      {"MPM/Rigid law rise fraction", number(p.rigid_law_rise_fraction, "")},
       {"MPM/End ligament", number(p.end_ligament, "m")},
       {"MPM/Steady growth", number(p.steady_growth, "m")},
+      {"MPM/Steady state window", number(p.steady_state_window, "m")},
+      {"MPM/Plateau tolerance", number(p.plateau_tolerance, "")},
       {"MPM/Maximum steps", std::to_string(p.max_steps)},
       {"MPM/VTU every advances", std::to_string(p.vtu_every_advances)},
   };

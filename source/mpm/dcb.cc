@@ -5,11 +5,12 @@
 #include "fiberbridge/core/output_guard.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/numerical_fault.h"
+#include "fiberbridge/law/rigid_law.h"
+#include "fiberbridge/law/steady_state.h"
 #include "fiberbridge/mpm/checkpoint.h"
 #include "fiberbridge/mpm/crack.h"
 #include "fiberbridge/mpm/explicit_solver.h"
 #include "fiberbridge/mpm/j_integral.h"
-#include "fiberbridge/mpm/regularized_law.h"
 #include "fiberbridge/mpm/vtu_writer.h"
 
 #include <algorithm>
@@ -51,8 +52,8 @@ void check_dcb_inputs(const law::Specimen& s, const law::Material& m, const MpmP
     throw InputError("MPM/End ligament: the tip could not grow: initial crack " +
                      fmt(s.initial_crack / mm) + " mm + ligament " + fmt(ligament / mm) +
                      " mm leave no room in a " + fmt(L / mm) + " mm specimen");
-  if (law && law->critical_opening() > 0)
-    regularize_rigid_law(*law, p.rigid_law_rise_fraction * law->critical_opening());
+  // Rigid laws need no check here: they are inserted as given (law/rigid_law.h).
+  (void)law;
 }
 
 DcbModel::DcbModel(const law::Specimen& s, const law::Material& m, const law::TractionLaw& law,
@@ -69,16 +70,15 @@ DcbModel::DcbModel(const law::Specimen& s, const law::Material& m, const law::Tr
 }
 
 void DcbModel::choose_law() {
+  // Extrinsic insertion (law/rigid_law.h): the crack carries the law as given. A fresh segment
+  // starts at sigma(0+) with delta_max = 0; its traction is explicit and bounded by the law, so a
+  // rigid law needs no elastic rise for the time step (the secant of a segment that closes below
+  // its delta_max is bounded the same way).
   law_ = &user_law_;
-  const double dc = user_law_.critical_opening();
-  if (dc > 0 && user_law_.rigid_at_zero_opening()) {
-    const double de = prm_.rigid_law_rise_fraction * dc;
-    regularized_ = regularize_rigid_law(user_law_, de);
-    law_ = regularized_.get();
-    notes_.push_back("rigid " + user_law_.name() + " law regularized with an elastic rise to " +
-                     fmt(de / mm) + " mm (area changes by " + fmt(law_->area() - user_law_.area()) +
-                     " J/m^2)");
-  }
+  if (const std::string note = law::rigid_law_insertion_note(user_law_); !note.empty())
+    notes_.push_back(note);
+  for (const auto& n : prm_.deprecation_notes)
+    notes_.push_back(n);
 }
 
 void DcbModel::setup_body() {
@@ -466,50 +466,29 @@ void DcbModel::finish(law::SimulationResult& r) const {
         "below tip J + zone work (path independence), and segments that unload a little while "
         "the arm rings work below the law's envelope (1 %); at 1.67 and 1.25 mm cells -2.5 and "
         "-3.3 % (not a cell-size error)");
-  // R_energy from the released energy between the advances before and after each row: the
-  // per-advance increments of W and U ring with the arm, the window averages that out.
+  // R_energy from the released energy between the advances before and after each row (the
+  // shared stencil): the per-advance increments of W and U ring with the arm, the central
+  // difference averages that out.
   auto& rc = r.rcurve;
-  const int n = static_cast<int>(rc.size());
-  const int w = 1;
-  auto released = [&](int i) {
-    return rc[i].external_work - rc[i].strain_energy - rc[i].zone_recoverable -
-           rc[i].kinetic_energy;
-  };
-  for (int i = 0; i < n; ++i) {
-    const int lo = std::max(0, i - w), hi = std::min(n - 1, i + w);
-    if (hi > lo)
-      rc[i].R_energy = (released(hi) - released(lo)) / (spec_.width * (rc[hi].a - rc[lo].a));
-  }
+  law::fill_r_energy(rc, spec_.width);
 
-  // Steady state: the notch root has moved (LEFM: from the first advance, the zone is empty).
-  // An advance where the tip lagged the loading happened above J_tip: its R_J belongs to a
-  // higher tip toughness, so it stays in the R curve (its J_tip column shows it) but not in the
-  // plateau. (The PVA ladder lagged at the last 1-3 advances of the 4, 3.33 and 2.5 mm runs,
-  // near the end ligament, where the beam-theory time per step that cuts the window came out too
-  // long; leaving them out moved G_ss by +0.1, 0.0 and -0.8 %.)
-  const bool bridging = law_->critical_opening() > 0;
-  double sum = 0;
-  int count = 0, lagging = 0;
-  for (const auto& p : rc) {
-    if (!((!bridging || p.root > a0_ + 0.25 * cell_) && std::isfinite(p.R_J)))
-      continue;
-    if (growth_->lagged(p.J_tip)) {
-      ++lagging;
-      continue;
-    }
-    sum += p.R_J;
-    ++count;
-  }
-  if (lagging > 0)
-    r.notes.push_back("G_ss leaves out " + std::to_string(lagging) +
-                      " steady-state advance(s) where the tip lagged the loading (J_tip above " +
-                      fmt(GrowthCriterion::lag_tolerance) +
-                      " x the set value; see the J_tip column)");
-  r.reached_steady_state = count > 0;
-  r.G_ss = count > 0 ? sum / count : law::not_available;
-  if (count == 0)
-    r.notes.push_back("steady state not reached: the notch root did not move before the run "
-                      "stopped (G_ss not available)");
+  // Steady state: the shared rule, evaluated on the whole run. The root position is known to a
+  // fraction of a cell (crack particles every half cell), so it has moved once it passes a0 by a
+  // quarter cell. An advance where the tip lagged the loading happened above J_tip: its R_J
+  // belongs to a higher tip toughness, so it stays in the R curve (its J_tip column shows it)
+  // but not in the plateau. (The PVA ladder lagged at the last 1-3 advances of the 4, 3.33 and
+  // 2.5 mm runs, near the end ligament, where the beam-theory time per step that cuts the window
+  // came out too long; leaving them out moved G_ss by +0.1, 0.0 and -0.8 %.)
+  law::SteadyStateRule rule;
+  rule.window = prm_.steady_state_window;
+  rule.tolerance = prm_.plateau_tolerance;
+  rule.root_move = 0.25 * cell_;
+  std::vector<bool> lagged(rc.size());
+  for (std::size_t i = 0; i < rc.size(); ++i)
+    lagged[i] = growth_->lagged(rc[i].J_tip);
+  const auto steady =
+      law::find_steady_state(rc, a0_, spec_.width, law_->critical_opening() > 0, rule, lagged);
+  law::report_steady_state(r, steady, rule, "MPM");
   r.rdelta_rel_error_vs_eq2 = law::rdelta_error_vs_eq2(r, user_law_, j_tip_);
 }
 

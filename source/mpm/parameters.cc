@@ -29,10 +29,12 @@ void MpmParameters::validate() const {
   require(j_window_periods >= 0 && j_window_periods <= 1, "J window periods",
           "must lie in [0, 1] arm periods");
   require(tip_j_cells >= 1, "Tip J domain", "must be at least 1 cell");
-  require(rigid_law_rise_fraction > 0 && rigid_law_rise_fraction < 0.1, "Rigid law rise fraction",
-          "must lie in (0, 0.1)");
   require(end_ligament >= 0, "End ligament", "must be >= 0 (mm)");
   require(steady_growth >= 0, "Steady growth", "must be >= 0 (mm)");
+  require(steady_state_window > 0 && std::isfinite(steady_state_window), "Steady state window",
+          "must be positive (mm)");
+  require(plateau_tolerance > 0 && plateau_tolerance < 1, "Plateau tolerance",
+          "must lie in (0, 1)");
   require(max_steps > 0, "Maximum steps", "must be positive");
   require(threads >= 1 && threads <= 256, "Threads", "must lie in [1, 256]");
   require(vtu_every_advances >= 0, "VTU every advances", "must be >= 0");

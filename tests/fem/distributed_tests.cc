@@ -2,6 +2,7 @@
 // (FemDistributed.*: the low-rank update against CG + AMG, corrected beam theory) and under
 // `mpirun -np 2` (FemMpi.*: the same model on MPI_COMM_WORLD = 2 ranks against MPI_COMM_SELF =
 // 1 rank, in one program). Coarse meshes on a short specimen: the whole set takes seconds.
+#include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/fem/dcb_simulation.h"
 #include "fiberbridge/fem/distributed_dcb.h"
@@ -181,6 +182,30 @@ TEST(FemDistributed, Thin3dReproducesPlaneStress) {
     EXPECT_EQ(r3.reached_steady_state, r2.reached_steady_state);
     EXPECT_LT(diff, coupled ? 2e-3 : 1e-7);
     EXPECT_NEAR(r3.G_ss, r2.G_ss, (coupled ? 2e-3 : 1e-7) * r2.G_ss);
+  }
+}
+
+// FEM/Steady-state window is the old name of FEM/Steady state window, the key of the steady-state
+// rule shared by every model section (issue 14): still accepted, mapped, and said so in the
+// run's notes; a value that is not a length is an error naming the old key.
+TEST(FemDistributed, OldSteadyStateWindowKeyIsMappedWithANote) {
+  dealii::ParameterHandler handler;
+  fem::FemParameters::declare_parameters(handler);
+  handler.parse_input_from_string("set Steady-state window = 6\n");
+  fem::FemParameters p;
+  p.parse_parameters(handler);
+  EXPECT_DOUBLE_EQ(p.steady_state_window, 6 * mm);
+  ASSERT_EQ(p.deprecation_notes.size(), 1u);
+  EXPECT_NE(p.deprecation_notes[0].find("FEM/Steady-state window is deprecated"),
+            std::string::npos);
+  dealii::ParameterHandler bad;
+  fem::FemParameters::declare_parameters(bad);
+  bad.parse_input_from_string("set Steady-state window = six mm\n");
+  try {
+    p.parse_parameters(bad);
+    ADD_FAILURE() << "a window that is not a number was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("FEM/Steady-state window"), std::string::npos);
   }
 }
 

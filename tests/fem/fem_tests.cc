@@ -13,7 +13,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -320,25 +322,32 @@ TEST(FemParameters, RejectsBadValues) {
 // stiff elastic rise. The tip element then holds openings from 0 to delta_1 (the first node
 // behind the tip) over which the traction drops from sigma_c: the composite rule with m
 // sub-intervals misses at most sigma_c delta_1 / (2 m) of Eq. 1, and the run says so.
-TEST(FemDcb, RigidLawIsRegularizedAndDiagnosed) {
+TEST(FemDcb, RigidLawIsInsertedExtrinsicallyWithoutALastingError) {
+  // Issue 13 item 3: the rigid law as given (extrinsic insertion, law/rigid_law.h), so R_J must
+  // follow the analytic R = J_tip + s_c delta_root / 2 at every advance, and plateau at J_tip +
+  // the law's area. 0.5 % is the issue's bound and the same budget as the regularized run above
+  // (path dependence of the FE J, integration of the tractions over the zone).
   const auto spec = short_dcb();
   fem::FemParameters prm;
   prm.element_size = 1 * mm;
   prm.steady_state_window = 8 * mm;
-  const auto law = law::make_linear_softening(1000 * kPa, 0.4 * mm);
-  const auto r = fem::simulate_dcb(spec, law::Material(), law, 200, prm);
+  const double sc = 1000 * kPa, dc = 0.4 * mm, j_tip = 200;
+  const auto law = law::make_linear_softening(sc, dc);
+  const auto r = fem::simulate_dcb(spec, law::Material(), law, j_tip, prm);
   ASSERT_TRUE(r.reached_steady_state);
-  bool regularized = false, diagnosed = false;
-  for (const auto& n : r.notes) {
-    regularized = regularized || n.find("rigid linear law regularized") == 0;
-    diagnosed = diagnosed || n.find("resolution: the opening one element behind the tip") == 0;
+  bool noted = false;
+  for (const auto& n : r.notes)
+    noted = noted || n.find("rigid linear law inserted extrinsically") == 0;
+  EXPECT_TRUE(noted);
+  double worst = 0;
+  for (const auto& p : r.rcurve) {
+    const double analytic = j_tip + 0.5 * sc * std::min(p.delta_root, dc);
+    EXPECT_NEAR(p.R_J / analytic, 1.0, 0.005) << "a = " << p.a / mm << " mm";
+    worst = std::max(worst, std::abs(p.R_J / analytic - 1));
   }
-  EXPECT_TRUE(regularized);
-  EXPECT_TRUE(diagnosed);
-  // delta_1 measured 0.035 mm here: bound 1e6 * 0.035e-3 / 8 = 4.4 J/m^2 (1.1 %), plus the
-  // 0.5 % budget of the regularized linear-softening test.
-  const double G_ss = 200 + law.area();
-  EXPECT_NEAR(r.G_ss / G_ss, 1.0, 0.011 + 0.005);
+  std::printf("extrinsic linear softening: worst |R_J/analytic - 1| %.2e, G_ss %.2f (law %.2f)\n",
+              worst, r.G_ss, j_tip + law.area());
+  EXPECT_NEAR(r.G_ss / (j_tip + law.area()), 1.0, 0.005);
 }
 
 // Plane strain: with the out-of-plane Poisson ratios set to zero the reduced compliance is the

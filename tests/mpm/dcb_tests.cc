@@ -331,9 +331,8 @@ TEST(MpmDcbPropagation, LinearSofteningZoneDevelopsAndReachesSteadyState) {
       EXPECT_LT(p.delta_root, dc);
     EXPECT_GE(p.zone_length, 0);
     // Eq. 2 of the law at the measured delta_root (the paper's convention) is exact by
-    // construction apart from the elastic rise: R_eq2 = J_tip + s_c delta/2 - O(s_c delta_e/2).
-    EXPECT_NEAR(p.R_eq2, std::min(G_ss, 200 + 0.5 * sc * std::min(p.delta_root, dc)),
-                0.5 * sc * 0.005 * dc + 1e-9);
+    // construction: the rigid law is inserted extrinsically, no elastic rise (round-off only).
+    EXPECT_NEAR(p.R_eq2, std::min(G_ss, 200 + 0.5 * sc * std::min(p.delta_root, dc)), 1e-9 * G_ss);
   }
   EXPECT_TRUE(root_moved);
   EXPECT_TRUE(r.reached_steady_state);
@@ -359,16 +358,16 @@ TEST(MpmDcbPropagation, LinearSofteningZoneDevelopsAndReachesSteadyState) {
             0.5 * sc * dc * run.specimen.width * (last.root - run.specimen.initial_crack));
 
   // Targets (seed Eq. 1 and 2): R_J plateaus at J_tip + J_c of the law the crack carries (the
-  // rigid law gets an elastic rise to 0.005 delta_c, which takes s_c delta_e / 2 off its area)
-  // and follows Eq. 2 while the zone develops. Measured: G_ss 292.6 against 299.5 (-2.3 %), R_J
-  // against Eq. 2 2.8 % (relative L2). What the 2.3 % is, measured at the advances (time
-  // averages over the steady part): J_ff reads 1.6 % below tip J + zone work (the path
-  // independence of the two domain integrals, 1.6 % also on the stationary crack), and the
-  // zone's tractions work 1 % of G_ss below the law's envelope (segments that unload a little
+  // rigid law as given: extrinsic insertion) and follows Eq. 2 while the zone develops.
+  // Measured: G_ss 293.1 against 300 (-2.3 %; with the former elastic rise to 0.005 delta_c,
+  // 292.6 against its 299.5), R_J against Eq. 2 2.8 % (relative L2). What the 2.3 % is, measured at
+  // the advances (time averages over the steady part): J_ff reads 1.6 % below tip J + zone work
+  // (the path independence of the two domain integrals, 1.6 % also on the stationary crack), and
+  // the zone's tractions work 1 % of G_ss below the law's envelope (segments that unload a little
   // while the arm rings follow the unloading line). The 5 % bounds leave room for that level
   // (3 %) and the scatter of the advances with the arm's ringing (+-1 %); the earlier rule
   // (J window fixed at the a0 arm period) measured -6.0 % and 5.2 % and fails them.
-  const double G_law = 200 + 0.5 * sc * dc - 0.5 * sc * 0.005 * dc;
+  const double G_law = 200 + 0.5 * sc * dc;
   EXPECT_NEAR(r.G_ss / G_law, 1.0, 0.05);
   EXPECT_LT(r.rdelta_rel_error_vs_eq2, 0.05);
 }

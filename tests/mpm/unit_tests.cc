@@ -3,7 +3,6 @@
 #include "fiberbridge/law/piecewise_linear_law.h"
 #include "fiberbridge/mpm/crack.h"
 #include "fiberbridge/mpm/orthotropic_elastic.h"
-#include "fiberbridge/mpm/regularized_law.h"
 #include "fiberbridge/mpm/shape_function.h"
 
 #include <gtest/gtest.h>
@@ -111,17 +110,4 @@ TEST(MpmCrack, SplitColumnsCanLagTheTip) {
   crack.advance(11.0, 0.0, 0.0);
   EXPECT_TRUE(crack.splits(below, 10.0, above));
   EXPECT_FALSE(crack.splits(below, 11.0, above));
-}
-
-TEST(MpmLaw, RigidLawGetsElasticRiseWithStatedAreaChange) {
-  const double sc = 400e3, dc = 1e-3, de = 5e-6;
-  const auto lin = law::make_linear_softening(sc, dc);
-  const auto reg = regularize_rigid_law(lin, de);
-  ASSERT_TRUE(reg);
-  EXPECT_FALSE(reg->rigid_at_zero_opening());
-  // Exact for a polyline: the triangle (0, sc)-(de, sigma(de))-(0, 0) is removed.
-  const double expected = lin.area() - 0.5 * sc * de;
-  EXPECT_NEAR(reg->area(), expected, 1e-9 * lin.area());
-  EXPECT_NEAR(reg->initial_stiffness(), lin.envelope(de) / de, 1e-6 * sc / de);
-  EXPECT_FALSE(regularize_rigid_law(law::make_bilinear(0.1e-3, 600e3, 2e-3), de));
 }

@@ -44,10 +44,10 @@ struct BeamParameters {
   /// Stop when the ligament ahead of the tip is shorter than this [m]; 0 = the specimen height
   /// (the beam-on-foundation picture needs a ligament longer than the section it bends).
   double minimum_ligament = 0;
-  /// Steady state: the root must have advanced this far [m]; R is averaged over that window.
+  /// Steady state (the shared rule, law::find_steady_state): after the root moved, R_J stays
+  /// within `plateau_tolerance` over at least this much tip growth [m]; G_ss is its mean there.
   double steady_state_window = 10e-3;
-  /// Steady state: the means of R_energy over the two halves of the window agree to this
-  /// relative tolerance, and so do R_energy and J_ff over the window.
+  /// Relative spread (max - min over mean) of R_J accepted as a plateau.
   double plateau_tolerance = 0.005;
   /// Newton: converged when the residual force is below this times the initiation load (or at
   /// its round-off floor) and the tip condition holds to this relative tolerance.
@@ -76,15 +76,15 @@ void check_dcb_inputs(const law::Specimen& specimen, const law::Material& materi
                       const BeamParameters& parameters);
 
 /// Runs the crack from the notch (tip and root at a0) until steady state or the ligament runs
-/// out. Steady state: the root has moved by `steady_state_window` and R_energy is flat over it
-/// and equal to J_ff (self-similar growth); G_ss is then its mean. If the ligament runs out first
-/// the notes say so; G_ss is then the mean R_J after the root moved (flag false), or NaN if the
-/// root never moved (zone longer than the ligament allows) or the zone is shorter than four tip
-/// advances (unresolved: the note says how far to refine). One RCurvePoint per recorded advance
-/// with every field except kinetic energy and time (static model). `progress` gets occasional
-/// one-line messages. n_dofs_or_particles is the number of beam elements. Throws InputError for
-/// unusable input, ComputationError if not even the initiation state can be solved (a later
-/// Newton failure ends the curve there with a note).
+/// out. Steady state: the shared rule (law::find_steady_state): after the root moved, R_J flat
+/// within `plateau_tolerance` over `steady_state_window` of growth; G_ss is then its mean. If the
+/// ligament runs out first the notes say so; G_ss is then the mean R_J after the root moved (flag
+/// false), or NaN if the root never moved (zone longer than the ligament allows) or the zone is
+/// shorter than four tip advances (unresolved: the note says how far to refine). One RCurvePoint
+/// per recorded advance with every field except kinetic energy and time (static model). `progress`
+/// gets occasional one-line messages. n_dofs_or_particles is the number of beam elements. Throws
+/// InputError for unusable input, ComputationError if not even the initiation state can be solved
+/// (a later Newton failure ends the curve there with a note).
 ///
 /// Accuracy (seed specimen, 400 elements): second order in the element size throughout; LEFM load
 /// within 0.006 % of CBT, R_J within 0.06 J/m^2 of Eq. 2 for the PVA law, energy balance 3e-5.

@@ -1,10 +1,12 @@
 #pragma once
 // Pieces of the DCB finite-element model (distributed_dcb.templates.h) that need no mesh: the
-// orthotropic stiffness, the insertable law (law::ElasticRiseLaw for rigid laws), the mesh
-// lines, the steady-state check, the J-integral weight, the stress output and number formatting.
+// orthotropic stiffness, the insertable law (extrinsic for rigid laws), the mesh
+// lines, the steady-state rule's parameters, the J-integral weight, the stress output and number
+// formatting.
 #include "fiberbridge/fem/dcb_simulation.h"
 #include "fiberbridge/law/elastic_rise_law.h"
 #include "fiberbridge/law/specimen.h"
+#include "fiberbridge/law/steady_state.h"
 #include "fiberbridge/law/traction_law.h"
 
 #include <deal.II/base/symmetric_tensor.h>
@@ -60,9 +62,8 @@ struct Ramp {
   }
 };
 
-/// The law the crack segments use: `law` itself, or (for a rigid law, sigma(0) > 0) an elastic
-/// rise (law::ElasticRiseLaw) of slope rigid_law_stiffness_factor E_T / element size held in
-/// `holder`; a note says so.
+/// The law the crack segments use: `law` itself, also when it is rigid (sigma(0) > 0: extrinsic
+/// insertion, law/rigid_law.h; a note says so). `holder` stays empty (no elastic rise).
 const law::TractionLaw* insertable_law(const law::TractionLaw& law, const law::Material& material,
                                        const FemParameters& p,
                                        std::unique_ptr<law::ElasticRiseLaw>& holder,
@@ -104,12 +105,9 @@ inline constexpr double kQ1BendingBound = 0.004;
 unsigned resolve_degree(const law::Specimen& specimen, const law::Material& material,
                         const FemParameters& p, std::vector<std::string>& notes);
 
-/// Steady state: the root has moved (at a = first_root_move) and R_J has stayed within
-/// plateau_tolerance over the last steady_state_window of growth. Then sets G_ss (mean R_J over
-/// the window) and reached_steady_state in `result`, notes the numbers with R_energy over the
-/// window from `dissipated` (per unit width, one entry per record), and returns true.
-bool check_steady_state(law::SimulationResult& result, const std::vector<double>& dissipated,
-                        double first_root_move, const FemParameters& p);
+/// The shared steady-state rule (law::find_steady_state) with FEM/Steady state window and
+/// FEM/Plateau tolerance; the root has moved once it passes a0 by more than round-off.
+law::SteadyStateRule steady_state_rule(const FemParameters& p, const law::Specimen& specimen);
 
 /// Small strain stops being good enough where the arms rotate far: the beam model's comparison
 /// with the elastica (docs/verification.md, "Finite rotations of the beam arms", a0 = 35 mm)

@@ -56,7 +56,7 @@ struct FemParameters {
   };
   NonlinearSolver nonlinear_solver = NonlinearSolver::newton;
   double contact_stiffness_factor = 10;   ///< contact penalty = factor * E_T / element size
-  double rigid_law_stiffness_factor = 10; ///< elastic rise of rigid laws = factor * E_T / size
+  double rigid_law_stiffness_factor = 10; ///< unused: rigid laws are inserted extrinsically
   unsigned int tip_domain_elements = 4;   ///< half-width of the tip J domain in elements
   double steady_state_window = 10e-3;     ///< crack growth over which the plateau is judged [m]
   double plateau_tolerance = 0.01;        ///< relative spread of R_J accepted as a plateau

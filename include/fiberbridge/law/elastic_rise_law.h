@@ -1,9 +1,9 @@
 #pragma once
-// A rigid law (sigma(0) > 0: linear or exponential softening) cannot be inserted at a closed
-// crack: it would pull with sigma(0) at zero opening, an infinitely stiff spring for the FEM's
-// Newton and for the MPM's explicit step alike. Both models give it a short elastic rise instead:
-// the secant from (0, 0) to (delta_e, sigma(delta_e)) below delta_e, the law unchanged above.
-// R then changes by -sigma(0) delta_e / 2 + O(delta_e^2), which the models report.
+// A rigid law (sigma(0) > 0: linear or exponential softening) with a short elastic rise: the
+// secant from (0, 0) to (delta_e, sigma(delta_e)) below delta_e, the law unchanged above. R then
+// changes by -sigma(0) delta_e / 2 + O(delta_e^2) for good. The models insert rigid laws
+// extrinsically instead (law/rigid_law.h); this wrapper stays for comparisons with intrinsic-law
+// codes (law::with_elastic_rise).
 #include "fiberbridge/law/traction_law.h"
 
 #include <vector>

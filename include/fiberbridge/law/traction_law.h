@@ -41,9 +41,8 @@ public:
   double area() const { return envelope_integral(critical_opening()); }
   /// Largest envelope traction and the opening where it occurs.
   std::pair<double, double> peak() const;
-  /// True when sigma(0+) > 0 (linear or exponential softening): the law has no elastic rise, so a
-  /// simulation must regularize it (see PiecewiseLinearLaw::with_elastic_rise) or treat it as
-  /// rigid.
+  /// True when sigma(0+) > 0 (linear or exponential softening): the law has no elastic rise; the
+  /// models insert it extrinsically, from sigma(0+) (law/rigid_law.h).
   bool rigid_at_zero_opening() const { return envelope(0.0) > 0.0; }
   /// Slope of the first elastic rise sigma(d1)/d1 [Pa/m]; +inf for a rigid law, 0 for none.
   double initial_stiffness() const;

@@ -88,7 +88,6 @@ private:
   std::function<void(const std::string&)> progress_;
   OrthotropicElastic elastic_;
 
-  law::TractionLawPtr regularized_;       ///< the law with an elastic rise, if the user's is rigid
   const law::TractionLaw* law_ = nullptr; ///< the law the crack segments use
   std::unique_ptr<Crack> crack_;
   std::unique_ptr<ExplicitSolver> solver_;
