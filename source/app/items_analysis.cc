@@ -160,6 +160,11 @@ void run_extract_item(SceneContext& ctx) {
   prm.leave_subsection();
   auto e = std::make_shared<ExtractionOutcome>(run_extraction(o, ctx.output_dir, ctx.summary));
   ctx.extraction = e;
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+  // identify ran before (scene order): its law beside Eq. 5/6 and dR/d delta on the same data.
+  if (ctx.identification)
+    report_law_routes(ctx);
+#endif
 }
 
 void run_fit_item(SceneContext& ctx) {
