@@ -1,6 +1,6 @@
 #!/bin/bash
 # DCB-05: identified G_ss against the reduce plateaus under variants of the identification.
-wt=/work/wt-records; bin=$wt/build/fiberbridge; out=${OUT:-/tmp/identify_dcb05}; mkdir -p $out
+wt=$(cd "$(dirname "$0")/.." && pwd); bin=$wt/build/fiberbridge; out=${OUT:-/tmp/identify_dcb05}; mkdir -p $out
 rec=$wt/data/dcb_records/DCB-05_Toughness.csv
 run() { name=$1; shift
   nice $bin run $wt/prm/test_records.prm --set "Output directory=$out/$name" --set "Run=reduce, identify" \
@@ -22,6 +22,4 @@ PY
 }
 run base
 run noF --set "Identify/Large displacement correction=false"
-
 run crack03 --set "Identify/Crack scatter=0.3"
-
