@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 namespace fiberbridge::analysis {
 
@@ -24,6 +25,8 @@ namespace {
 constexpr double readings_per_window = 10;
 constexpr double arm_thicknesses_per_window = 4;
 constexpr std::size_t min_readings = 5;
+/// The band's scatter of neighbouring estimates is taken over this many windows (centred).
+constexpr double scatter_windows = 4;
 
 std::string num(double v) {
   std::ostringstream s;
@@ -207,7 +210,31 @@ ReducedRecord reduce_record(const TestRecord& rec, const TestSpecimen& sp, const
   out.cc_n = cc.slope;
   out.mcc_A1 = mcc.slope;
 
+  // Direct energy at every reading (the window is centred on each reading, so it always spans
+  // whole reading steps: D is known only where a new reading was made). Two estimates: the
+  // slope over the window w and over 2 w. Where R is locally linear over 2 w both are unbiased,
+  // and their difference measures the scatter of the w estimate that the 2 w one averages out:
+  // reading noise (then close to the standard error) and tracking errors correlated over a few
+  // mm (crack readings that drift ahead of the crack and fall back), which the residual-based
+  // standard error of one window cannot see because they bend D(a) smoothly inside it.
   const WindowLines lines(ar, Dr);
+  auto window_of = [&](double a, double w) {
+    const auto lo = std::lower_bound(ar.begin(), ar.end(), a - w / 2) - ar.begin();
+    const auto hi = std::upper_bound(ar.begin(), ar.end(), a + w / 2) - ar.begin();
+    return std::pair<std::size_t, std::size_t>(static_cast<std::size_t>(lo),
+                                               static_cast<std::size_t>(hi));
+  };
+  std::vector<double> slope(ar.size(), NAN), slope_se(ar.size(), NAN);
+  std::vector<double> diff2_sum(ar.size() + 1, 0.0), diff_count(ar.size() + 1, 0.0);
+  for (std::size_t j = 0; j < ar.size(); ++j) {
+    const auto [b, e] = window_of(ar[j], out.window);
+    std::tie(slope[j], slope_se[j]) = lines.slope(b, e);
+    const auto [b2, e2] = window_of(ar[j], 2 * out.window);
+    const double wide = lines.slope(b2, e2).first;
+    const bool ok = std::isfinite(slope[j]) && std::isfinite(wide);
+    diff2_sum[j + 1] = diff2_sum[j] + (ok ? std::pow(slope[j] - wide, 2) : 0.0);
+    diff_count[j + 1] = diff_count[j] + (ok ? 1.0 : 0.0);
+  }
   out.max_opening_over_a = 0;
   for (std::size_t j : beyond) {
     const std::size_t k = readings[j];
@@ -225,14 +252,23 @@ ReducedRecord reduce_record(const TestRecord& rec, const TestSpecimen& sp, const
     if (!rec.delta_root.empty())
       out.delta_root.push_back(rec.delta_root[k]);
 
-    // Local straight line of D against a over the readings within window/2 (readings are
-    // sorted in a: the reader holds a at its running maximum).
-    const auto lo = std::lower_bound(ar.begin(), ar.end(), a - out.window / 2) - ar.begin();
-    const auto hi = std::upper_bound(ar.begin(), ar.end(), a + out.window / 2) - ar.begin();
-    const auto [k_D, se] = lines.slope(static_cast<std::size_t>(lo), static_cast<std::size_t>(hi));
-    out.R_energy.push_back(k_D / B);
-    out.R_energy_lo.push_back((k_D - 2 * se) / B);
-    out.R_energy_hi.push_back((k_D + 2 * se) / B);
+    // Band: +-2 s, s the larger of the slope's standard error and the scatter of neighbouring
+    // estimates: the RMS difference between the w and 2 w estimates over the readings within
+    // two windows either side, scaled by sqrt(4/3). Why that factor: for reading errors
+    // correlated over less than a window the 2 w slope carries a quarter of the w slope's error
+    // variance (an end-to-end difference over twice the length), so the difference of the two
+    // holds 3/4 of it; for independent reading noise (1/8 of it) the factor overstates s by 7 %.
+    // Why two windows: the RMS over one window either side rests on few independent
+    // differences when the errors are correlated and scatters with them (docs/verification.md,
+    // "Test records": coverage measured both ways).
+    const auto [nb, ne] = window_of(a, scatter_windows * out.window);
+    const double n_diff = diff_count[ne] - diff_count[nb];
+    const double scatter =
+        n_diff > 0 ? std::sqrt((diff2_sum[ne] - diff2_sum[nb]) / n_diff * 4.0 / 3.0) : slope_se[j];
+    const double half = 2 * std::max(slope_se[j], scatter);
+    out.R_energy.push_back(slope[j] / B);
+    out.R_energy_lo.push_back((slope[j] - half) / B);
+    out.R_energy_hi.push_back((slope[j] + half) / B);
   }
 
   out.energy = summarize(out.da, out.R_energy, o.plateau_fraction);
@@ -247,7 +283,9 @@ ReducedRecord reduce_record(const TestRecord& rec, const TestSpecimen& sp, const
                            ? " (automatic: the larger of 10 median reading spacings and 4 arm "
                              "thicknesses)"
                            : "") +
-                      "; band +-2 standard errors of the slope from the residuals");
+                      "; band +-2 x the larger of the slope's standard error and the scatter of "
+                      "neighbouring estimates (RMS difference to the slope over twice the "
+                      "window, x sqrt(4/3), over the readings within two windows either side)");
   out.notes.push_back(
       std::string("beam theory: ") + std::to_string(beyond.size()) + " readings beyond a0 = " +
       num(out.a0 / units::mm) + " mm; MBT |Delta| " + num(out.mbt_delta / units::mm) +

@@ -30,10 +30,10 @@ TestRecord make_synthetic_record(const law::SimulationResult& result,
                      std::to_string(rows.size()) + " R-curve rows; at least 2 are needed");
   if (!(o.sampling_rate_hz > 0) || !(o.opening_rate > 0) || !(o.crack_reading_interval > 0) ||
       o.load_noise < 0 || o.opening_noise < 0 || o.crack_reading_noise < 0 ||
-      o.delta_root_noise < 0)
+      o.delta_root_noise < 0 || o.crack_tracking_drift < 0 || !(o.crack_tracking_correlation > 0))
     throw InputError("synthetic record '" + name +
-                     "': sampling rate, opening rate and reading interval must be > 0 and the "
-                     "noise levels >= 0");
+                     "': sampling rate, opening rate, reading interval and tracking correlation "
+                     "must be > 0 and the noise levels >= 0");
   // The curve in opening: the origin, then the rows (the first row's crack length and compliance
   // on the elastic rise before it).
   std::vector<double> x = {0.0}, P = {0.0}, a = {rows[0].a}, root = {0.0};
@@ -66,11 +66,17 @@ TestRecord make_synthetic_record(const law::SimulationResult& result,
   TestRecord rec;
   rec.name = name;
   rec.source = "synthetic (" + result.model + ")";
-  double reading = as[0], next_reading = 0;
+  double reading = as[0], next_reading = 0, drift = 0, drift_a = as[0];
   for (std::size_t k = 0; k <= n; ++k) {
     const double t = dt * static_cast<double>(k);
     if (t >= next_reading) {
-      reading = as[k] + clipped_normal(rng, o.crack_reading_noise);
+      if (o.crack_tracking_drift > 0) {
+        const double rho = std::exp(-(as[k] - drift_a) / o.crack_tracking_correlation);
+        drift =
+            rho * drift + std::sqrt(1 - rho * rho) * clipped_normal(rng, o.crack_tracking_drift);
+        drift_a = as[k];
+      }
+      reading = as[k] + drift + clipped_normal(rng, o.crack_reading_noise);
       next_reading += o.crack_reading_interval;
     }
     rec.time.push_back(t);
@@ -113,6 +119,9 @@ std::vector<std::string> describe_synthetic_record(const law::SimulationResult& 
     << " mm/min; noise (1 sigma, clipped at 3): load " << o.load_noise << " N, opening "
     << o.opening_noise / units::mm << " mm, crack reading " << o.crack_reading_noise / units::mm
     << " mm every " << o.crack_reading_interval << " s";
+  if (o.crack_tracking_drift > 0)
+    s << ", crack tracking drift " << o.crack_tracking_drift / units::mm << " mm correlated over "
+      << o.crack_tracking_correlation / units::mm << " mm of growth";
   if (o.with_delta_root)
     s << ", delta_root " << o.delta_root_noise / units::mm << " mm";
   s << "; seed " << o.seed << ".";

@@ -253,6 +253,10 @@ void run_identify_item(SceneContext& ctx) {
                          ? "E_L calibrated per record from the initial compliance (CBT)"
                          : "E_L as quoted (Material/E_L)";
   block["E_L_quoted_GPa"] = quoted.E_L * 1e-9;
+  if (std::all_of(records.begin(), records.end(),
+                  [](const analysis::TestRecord& r) { return !r.delta_root.empty(); }))
+    block["notes"].push_back("delta_root measured: with 'extract' in Run (after reduce) the "
+                             "scene compares Eq. 5/6, dR/ddelta and this law (law_routes)");
   if (per_record && records.size() > 1) {
     Json each = Json::array();
     for (std::size_t k = 0; k < records.size(); ++k) {

@@ -246,6 +246,11 @@ void run_extract_item(SceneContext& ctx) {
   auto e = std::make_shared<ExtractionOutcome>(
       run_extraction(parse_data_section(ctx, false), ctx.output_dir, ctx.summary));
   ctx.extraction = e;
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+  // identify ran before (scene order): its law beside Eq. 5/6 and dR/d delta on the same data.
+  if (ctx.identification)
+    report_law_routes(ctx);
+#endif
 }
 
 void check_fit_item(SceneContext& ctx) {

@@ -7,6 +7,7 @@
 #include "fiberbridge/core/plot.h"
 #include "fiberbridge/core/units.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fiberbridge::app {
@@ -39,9 +40,10 @@ void write_tables(const ReduceOutcome& r, const std::string& out_dir) {
     header.push_back("R_delta_J_m2");
   }
   CsvWriter w(out_dir + "/rcurve_test.csv", header,
-              {"R(a) per crack reading: direct energy (band +-2 standard errors of the local "
-               "slope) and ASTM D5528 / ISO 15024 MBT, CC, MCC; R_delta is R_energy at the "
-               "measured notch-root opening"});
+              {"R(a) per crack reading: direct energy (band +-2 x the larger of the local "
+               "slope's standard error and the scatter of neighbouring estimates) and ASTM "
+               "D5528 / ISO 15024 MBT, CC, MCC; R_delta is R_energy at the measured notch-root "
+               "opening"});
   for (const auto& x : r.reduced)
     for (std::size_t i = 0; i < x.a.size(); ++i) {
       std::vector<double> v = {x.a[i] / mm,      x.da[i] / mm, x.R_energy[i], x.R_energy_lo[i],
@@ -83,11 +85,18 @@ void write_tables(const ReduceOutcome& r, const std::string& out_dir) {
 }
 
 void plot(const ReduceOutcome& r, const std::string& out_dir, Json& summary) {
+  // The load axis ends 10 % above the largest load of any record: gnuplot's autoscale ends at
+  // the next tick, which for DCB-01's 99.8 N peak is 100 N, and drew the peak on the frame.
+  double peak = 0;
+  for (const auto& rec : r.records)
+    for (double P : rec.load)
+      peak = std::max(peak, P);
   // noenhanced: record names carry underscores, which gnuplot would make subscripts.
   std::string p = gnuplot_png_preamble("reduce_load_opening.png");
   p += "set termoption noenhanced\nset datafile separator ','\nset xlabel 'load-line opening "
        "(mm)'\nset ylabel 'load "
-       "(N)'\nset key top right\nplot ";
+       "(N)'\nset key top right\nset xrange [0:*]\nset yrange [0:" +
+       std::to_string(1.1 * peak) + "]\nplot ";
   std::string a = gnuplot_png_preamble("reduce_crack_opening.png");
   a += "set termoption noenhanced\nset datafile separator ','\nset xlabel 'load-line opening "
        "(mm)'\nset ylabel 'crack length "
@@ -113,7 +122,7 @@ void plot(const ReduceOutcome& r, const std::string& out_dir, Json& summary) {
          "set key bottom right\nsel(c) = strcol(1) eq '" +
          x.name +
          "' ? column(c) : 1/0\nplot 'rcurve_test.csv' using 2:(sel(5)):(sel(6)) with "
-         "filledcurves fs transparent solid 0.3 lc 1 title 'direct energy band (+-2 s.e.)', "
+         "filledcurves fs transparent solid 0.3 lc 1 title 'direct energy band', "
          "'' using 2:(sel(4)) with lines lw 2 lc 1 title 'direct energy', '' using 2:(sel(7)) "
          "with lines lw 2 lc 2 title 'MBT', '' using 2:(sel(8)) with lines lc 3 title 'CC', '' "
          "using 2:(sel(9)) with lines lc 4 dt 2 title 'MCC'\n";

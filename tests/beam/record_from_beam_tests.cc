@@ -87,9 +87,8 @@ TEST(RecordFromBeam, ReduceRecoversTheModelsEnergyRCurve) {
     // much; the bounds are the measured values plus that spread, not more.
     EXPECT_LT(median, 0.015);
     EXPECT_LT(p90, 0.04);
-    // The band is +-2 standard errors: it should hold the truth at most readings, though not
-    // at all (the noise on a reading is correlated over the window through the step-wise
-    // readings).
+    // The band (record_reduction.h) should hold the truth at most readings; its rate over many
+    // seeds is checked in EnergyBandCoversTheKnownCurve below.
     EXPECT_GT(static_cast<double>(inside) / n, 0.7);
     if (root) {
       const auto data = to_rdelta({r}, "synthetic");
@@ -131,5 +130,71 @@ TEST(RecordFromBeam, BundledDeltaRootRecordIsThisGeneratorsOutput) {
     const double load = std::max(0.0, made.load[i]);
     EXPECT_NEAR(rec.load[i], load, 1e-6 * (1 + load));
     EXPECT_NEAR(rec.delta_root[i], made.delta_root[i], 1e-9);
+  }
+}
+
+// The direct-energy band against the known R(a) (issue 12 verification; docs/verification.md,
+// "Test records"): over many seeds, the share of readings (two-sided windows) whose band holds
+// the model's R_energy. Two kinds of crack readings: independent noise only (0.1 mm, as above),
+// and in addition a tracking drift (0.3 mm, correlated over 5 or 12 mm of growth) like the
+// shared records', where the crack readings run ahead and fall back over millimetres and the
+// direct energy swings about the true curve with periods of several mm (DCB-01 beyond
+// a = 62 mm). The band is +-2 x (larger of the slope's standard error and the scatter of
+// neighbouring estimates): its nominal rate is 95 %.
+TEST(RecordFromBeam, EnergyBandCoversTheKnownCurve) {
+  beam::BeamParameters bp;
+  bp.n_elements = 200;
+  bp.steady_state_window = 1.0;
+  const auto sim = rising_part(beam::simulate_dcb(
+      thin_dcb(), glass_composite(), law::make_trilinear(bridging()), thin_dcb_case::j_tip, bp));
+  std::vector<double> model_a, model_R;
+  for (const auto& q : sim.rcurve) {
+    model_a.push_back(q.a);
+    model_R.push_back(q.R_energy);
+  }
+  TestSpecimen sp;
+  sp.width = 25 * mm;
+  sp.arm_thickness = 2.7 * mm;
+  const std::pair<double, double> cases[] = {
+      {0.0, 5 * mm}, {0.3 * mm, 5 * mm}, {0.3 * mm, 12 * mm}};
+  for (const auto& [drift, correlation] : cases) {
+    std::size_t inside = 0, n = 0;
+    double rel_half_width = 0;
+    for (unsigned seed = 100; seed < 116; ++seed) {
+      SyntheticRecordOptions so;
+      so.crack_reading_interval = 2;
+      so.crack_tracking_drift = drift;
+      so.crack_tracking_correlation = correlation;
+      so.seed = seed;
+      TestRecord rec = make_synthetic_record(sim, so, "beam");
+      // The reader's cleaning: readings that fall back (the drift does) held at the maximum.
+      for (std::size_t i = 1; i < rec.crack_length.size(); ++i)
+        rec.crack_length[i] = std::max(rec.crack_length[i], rec.crack_length[i - 1]);
+      const auto r = reduce_record(rec, sp);
+      for (std::size_t i = 0; i < r.a.size(); ++i) {
+        if (r.a[i] - r.a0 < r.window / 2 || r.a.back() - r.a[i] < r.window / 2)
+          continue;
+        const double truth = interpolate_linear(model_a, model_R, r.a[i]);
+        inside += r.R_energy_lo[i] <= truth && truth <= r.R_energy_hi[i];
+        rel_half_width += 0.5 * (r.R_energy_hi[i] - r.R_energy_lo[i]) / truth;
+        ++n;
+      }
+    }
+    ASSERT_GT(n, 1000u);
+    const double rate = static_cast<double>(inside) / n;
+    std::printf(
+        "tracking drift %.1f mm over %.0f mm: the band holds the model at %.1f %% of %zu readings "
+        "(16 seeds), mean half-width %.1f %% of R\n",
+        drift / mm, correlation / mm, 100 * rate, n, 100 * rel_half_width / n);
+    // Measured (docs/verification.md, "Test records"): 99.2 % without drift (the band is
+    // conservative there: the 2 w comparison also sees the R curve's curvature), 94.5 % with
+    // drift correlated over 5 mm (errors correlated over less than the 10.8 mm window: the
+    // nominal 95 %), 90.3 % over 12 mm (errors correlated beyond the window are partly common
+    // to the w and 2 w slopes, so the band sees less of them). The old +-2 s.e. band held the
+    // model at 88.6 % and 38.5 % in the first two cases. The 16 seeds give the rates a sampling
+    // scatter of about 1.5 % (some 10 independent windows per record); the bounds are the
+    // measured rates less 2.5 %, the nominal rate where it is reached.
+    const double bound = drift == 0 ? 0.95 : correlation < 10 * mm ? 0.92 : 0.875;
+    EXPECT_GT(rate, bound) << "drift " << drift / mm << " mm over " << correlation / mm << " mm";
   }
 }

@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <string>
 
 using namespace fiberbridge;
 using namespace fiberbridge::identify;
@@ -27,37 +29,48 @@ analysis::TestRecord shared_record(const std::string& name) {
 
 } // namespace
 
-TEST(Identify, SharedRecords) {
-  for (const char* name : {"DCB-01", "DCB-02", "DCB-03", "DCB-05"}) {
-    const auto rec = shared_record(name);
-    IdentifySettings s;
-    const auto id = identify_law({rec}, record_specimen(), record_material(19.3e9), s,
-                                 [](const std::string& l) { std::printf("%s\n", l.c_str()); });
-    std::printf("%s: E_L %.4g GPa, d1 %.4g mm s1 %.4g kPa d2 %.4g mm s2 %.4g kPa dc %.4g mm "
-                "J_tip %.4g G_ss %.4g | load rms %.4g %% crack rms %.4g mm | %d evals, %d runs, "
-                "%.3g s (forward %.3g s)\n",
-                name, id.records[0].E_L * 1e-9, id.law.d1 / mm, id.law.s1 / 1e3, id.law.d2 / mm,
-                id.law.s2 / 1e3, id.law.dc / mm, id.j_tip, id.g_ss, 100 * id.load_rms_rel,
-                id.crack_rms / mm, id.evaluations, id.forward_runs, id.wall_time_s,
-                id.forward_time_s);
-    for (const auto& p : id.parameters)
-      std::printf("  %s = %.4g +- %.3g\n", p.name.c_str(), p.value, p.std_error);
-    for (const auto& n : id.notes)
-      std::printf("  note: %s\n", n.c_str());
-    // "Reproduces the measured load-opening curve": the RMS load misfit stays under 4 % of the
-    // peak (measured 1.3-3.1 %, docs/verification.md), well below the 9 % spread of the four
-    // replicates' peak loads (91-100 N), so the law describes each record better than the
-    // replicates describe each other.
-    EXPECT_LT(id.load_rms_rel, 0.04) << name;
-    // Crack readings: optical tracking steps of 1-5 mm (DCB-03's readings lag by up to ~10 mm
-    // at the end); RMS under 6 mm.
-    EXPECT_LT(id.crack_rms, 6 * mm) << name;
-    // The identified law must carry most of the toughness rise the records show (G_I column
-    // about 1 kJ/m^2 at the end): G_ss between 700 and 1500 J/m^2.
-    EXPECT_GT(id.g_ss, 700) << name;
-    EXPECT_LT(id.g_ss, 1500) << name;
-  }
+// One test per shared record, so that ctest -j runs them side by side (each is 10-40 s with the
+// default settings; as one test the four took ~200 s in ctest).
+class IdentifySharedRecord : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(IdentifySharedRecord, ReproducesTheLoadCurve) {
+  const char* name = GetParam();
+  const auto rec = shared_record(name);
+  IdentifySettings s;
+  const auto id = identify_law({rec}, record_specimen(), record_material(19.3e9), s,
+                               [](const std::string& l) { std::printf("%s\n", l.c_str()); });
+  std::printf("%s: E_L %.4g GPa, d1 %.4g mm s1 %.4g kPa d2 %.4g mm s2 %.4g kPa dc %.4g mm "
+              "J_tip %.4g G_ss %.4g | load rms %.4g %% crack rms %.4g mm | %d evals, %d runs, "
+              "%.3g s (forward %.3g s)\n",
+              name, id.records[0].E_L * 1e-9, id.law.d1 / mm, id.law.s1 / 1e3, id.law.d2 / mm,
+              id.law.s2 / 1e3, id.law.dc / mm, id.j_tip, id.g_ss, 100 * id.load_rms_rel,
+              id.crack_rms / mm, id.evaluations, id.forward_runs, id.wall_time_s,
+              id.forward_time_s);
+  for (const auto& p : id.parameters)
+    std::printf("  %s = %.4g +- %.3g\n", p.name.c_str(), p.value, p.std_error);
+  for (const auto& n : id.notes)
+    std::printf("  note: %s\n", n.c_str());
+  // "Reproduces the measured load-opening curve": the RMS load misfit stays under 4 % of the
+  // peak (measured 1.3-3.1 %, docs/verification.md), well below the 9 % spread of the four
+  // replicates' peak loads (91-100 N), so the law describes each record better than the
+  // replicates describe each other.
+  EXPECT_LT(id.load_rms_rel, 0.04) << name;
+  // Crack readings: optical tracking steps of 1-5 mm (DCB-03's readings lag by up to ~10 mm
+  // at the end); RMS under 6 mm.
+  EXPECT_LT(id.crack_rms, 6 * mm) << name;
+  // The identified law must carry most of the toughness rise the records show (G_I column
+  // about 1 kJ/m^2 at the end): G_ss between 700 and 1500 J/m^2.
+  EXPECT_GT(id.g_ss, 700) << name;
+  EXPECT_LT(id.g_ss, 1500) << name;
 }
+
+INSTANTIATE_TEST_SUITE_P(Identify, IdentifySharedRecord,
+                         ::testing::Values("DCB-01", "DCB-02", "DCB-03", "DCB-05"),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                           std::string n = info.param;
+                           n.erase(std::remove(n.begin(), n.end(), '-'), n.end());
+                           return n;
+                         });
 
 TEST(Identify, BadSettingsNameTheKey) {
   auto message = [](IdentifySettings s) {

@@ -51,9 +51,13 @@ struct ReducedRecord {
 /// Reduces one cleaned record. Direct energy: D = W - U with W the trapezoid integral of P over
 /// the opening and U = P opening / 2 (linear unloading to the origin, seed Eq. 2's assumption);
 /// R = dD/(B da) is the slope of D against a in a local least-squares line over the readings
-/// within window/2 of each reading, its band +-2 standard errors of that slope from the fit's
-/// residuals. Beam theory (ASTM D5528 / ISO 15024), C = opening/load, fits over the readings
-/// beyond a0:
+/// within window/2 of each reading (D only at the rows where a new crack reading is made). Its
+/// band is +-2 s, s the larger of that slope's standard error from the fit's residuals and the
+/// scatter of neighbouring estimates: sqrt(4/3) x the RMS difference, over the readings within
+/// two windows either side, between the slope over the window and over twice the window (this
+/// sees crack readings whose error is correlated over millimetres, which bend D(a) smoothly
+/// inside one window and leave its residuals small). Beam theory (ASTM D5528 / ISO 15024), C =
+/// opening/load, fits over the readings beyond a0:
 ///  - MBT: G = 3 P delta F / (2 B (a + |Delta|) N), Delta from the line (C/N)^(1/3) against a;
 ///  - CC:  G = n P delta F / (2 B a N), n the slope of log(C/N) against log a;
 ///  - MCC: G = 3 P^2 (C/N)^(2/3) F / (2 A1 B 2h), A1 the slope of a/(2h) against (C/N)^(1/3);

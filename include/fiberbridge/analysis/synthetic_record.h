@@ -17,8 +17,14 @@ struct SyntheticRecordOptions {
   double opening_noise = 1e-6;         ///< standard deviation of the crosshead reading [m]
   double crack_reading_interval = 5;   ///< a new crack reading every this many seconds [s]
   double crack_reading_noise = 0.1e-3; ///< standard deviation of each crack reading [m]
-  double delta_root_noise = 1e-6;      ///< clip-gauge noise [m] (only with_delta_root)
-  bool with_delta_root = false;        ///< also write the notch-root opening
+  /// Standard deviation of a slowly varying tracking error on every crack reading [m] (0: none):
+  /// an optical tracker that runs ahead of the crack and falls back over millimetres of growth,
+  /// as the shared records' readings do (data/dcb_records). An AR(1) process in crack growth,
+  /// correlation exp(-growth / crack_tracking_correlation) between successive readings.
+  double crack_tracking_drift = 0;
+  double crack_tracking_correlation = 5e-3; ///< [m]
+  double delta_root_noise = 1e-6;           ///< clip-gauge noise [m] (only with_delta_root)
+  bool with_delta_root = false;             ///< also write the notch-root opening
   unsigned seed = 1;
 };
 
@@ -29,10 +35,11 @@ struct SyntheticRecordOptions {
 /// compliance with the crack at the first row's a (the simulation's rows start at the first
 /// advance). Crack readings: a new reading (true length plus Gaussian noise, clipped at 3 sigma)
 /// every crack_reading_interval seconds, repeated on the rows in between, as an optical tracker
-/// read by hand does. One std::mt19937 seeded with `seed`: reproducible.
-/// Throws InputError when the rows' load-point opening does not increase (snap-back cannot be
-/// sampled at constant crosshead rate), there are fewer than 2 rows, or an option is not positive
-/// where it must be.
+/// read by hand does; with crack_tracking_drift > 0 each reading also carries the drift (drawn
+/// only then, so records without it are unchanged for a given seed). One std::mt19937 seeded with
+/// `seed`: reproducible. Throws InputError when the rows' load-point opening does not increase
+/// (snap-back cannot be sampled at constant crosshead rate), there are fewer than 2 rows, or an
+/// option is not positive where it must be.
 TestRecord make_synthetic_record(const law::SimulationResult& result,
                                  const SyntheticRecordOptions& options, const std::string& name);
 

@@ -37,6 +37,9 @@ void check_identify_item(SceneContext& ctx);
 void run_identify_item(SceneContext& ctx);
 /// For compare: the identified law's simulations against the first record (identify_check).
 void check_identified_against_simulations(SceneContext& ctx);
+/// After extract, when identify ran in the same scene (records with delta_root): the three
+/// routes to the law side by side (law_routes.csv, summary block law_routes, law_routes.png).
+void report_law_routes(SceneContext& ctx);
 #endif
 #ifdef FIBERBRIDGE_HAVE_BEAM
 void declare_beam_section(dealii::ParameterHandler& prm);
