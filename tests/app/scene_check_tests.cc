@@ -54,9 +54,9 @@ TEST(SceneCheck, ContradictoryMpmSettingFailsBeforeTheBeamRuns) {
   expect_rejected_before_running(
       "check_mpm_ligament", scene("beam, mpm", "--set 'MPM/End ligament=199'"), "MPM/End ligament");
   // Out of the range MpmParameters::validate allows (the pattern admits it).
-  expect_rejected_before_running("check_mpm_rise",
-                                 scene("beam, mpm", "--set 'MPM/Rigid law rise fraction=0'"),
-                                 "MPM/Rigid law rise fraction");
+  expect_rejected_before_running("check_mpm_plateau",
+                                 scene("beam, mpm", "--set 'MPM/Plateau tolerance=0'"),
+                                 "MPM/Plateau tolerance");
 }
 
 TEST(SceneCheck, BadFemValueFailsBeforeTheBeamRuns) {
@@ -69,13 +69,12 @@ TEST(SceneCheck, BadFemValueFailsBeforeTheBeamRuns) {
   // 25 mm elements put only 4 elements along the 100 mm notch: the engine needs 5.
   expect_rejected_before_running(
       "check_fem_mesh", scene("beam, fem", "--set 'FEM/Element size=25'"), "FEM/Element size");
-  // A rigid linear law whose elastic rise would not be small against delta_c.
-  expect_rejected_before_running("check_fem_rise",
-                                 scene("beam, fem",
-                                       "--set 'Cohesive law/Type=linear' --set 'Cohesive law/Peak "
-                                       "stress=50' --set 'Cohesive law/Delta c=0.02' --set "
-                                       "'FEM/Rigid law stiffness factor=1e-6'"),
-                                 "FEM/Rigid law stiffness factor");
+  // 2 mm arms: the crack-plane layer is 2/4 mm (Minimum layers per arm), so 5 mm elements would
+  // be 10 times longer than high (fem::kMaxCrackPlaneAspect is 4): only the specimen tells.
+  expect_rejected_before_running(
+      "check_fem_aspect",
+      scene("beam, fem", "--set 'Specimen/Height=4' --set 'FEM/Element size=5'"),
+      "FEM/Element size");
 }
 
 TEST(SceneCheck, LaterItemsOwnSectionsAreCheckedFirst) {
