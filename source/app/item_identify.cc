@@ -47,8 +47,9 @@ void declare_identify_section(dealii::ParameterHandler& prm) {
                     "The initial compliance is fitted over the rows before the first crack jump "
                     "with a load between these fractions of the peak.");
   prm.declare_entry("Compliance high", "0.5", Double(0, 1), "See Compliance low.");
-  prm.declare_entry("Large displacement correction", "true", Bool(),
-                    "Divide the beam's small-rotation load by ISO 15024's F(delta/a).");
+  prm.declare_entry(
+      "Large displacement correction", "true", Bool(),
+      "Map the beam's small-rotation states onto large rotations with ISO 15024's F and N.");
   prm.declare_entry("Algorithm", "bobyqa", Selection("bobyqa|sbplx"),
                     "NLopt bounded derivative-free method.");
   prm.declare_entry("Max evaluations", "300", Integer(10), "Misfit evaluations per start.");
@@ -286,7 +287,8 @@ void run_identify_item(SceneContext& ctx) {
 
 void check_identified_against_simulations(SceneContext& ctx) {
   // The identified law back through each simulation, on the first record's specimen: the load
-  // misfit of the simulated P(opening) against the measured one (F applied as in identify).
+  // misfit of the simulated P(opening) against the measured one (large displacements mapped as in
+  // identify).
   const auto& rec = ctx.identification->records.front();
   ctx.prm->enter_subsection("Identify");
   const bool large = ctx.prm->get_bool("Large displacement correction");
@@ -296,18 +298,18 @@ void check_identified_against_simulations(SceneContext& ctx) {
                      title_of(rec.name) + " measured'";
   for (const auto& [name, result] : ctx.results) {
     std::vector<double> load, a;
-    identify::model_at_openings(result, rec.opening, load, a);
+    law::SimulationResult mapped = result; // geometrically linear models, mapped as in identify
+    if (large)
+      identify::with_large_displacements(mapped, ctx.specimen().arm_thickness());
+    identify::model_at_openings(mapped, rec.opening, load, a);
     double sum = 0;
     const std::string file = "identify_check_" + name + ".csv";
     CsvWriter w(ctx.out(file), {"opening_mm", "load_N", "model_load_N", "a_mm", "model_a_mm"},
                 {name + " with the identified law at the record's openings"});
     // Only the rows the simulation reached (the FEM stops at steady state).
-    const double reached = result.rcurve.back().load_point_opening;
+    const double reached = mapped.rcurve.back().load_point_opening;
     std::size_t n = 0;
     for (std::size_t i = 0; i < load.size() && rec.opening[i] <= reached; ++i, ++n) {
-      if (large)
-        load[i] /= identify::large_displacement_factor(rec.opening[i], a[i],
-                                                       ctx.specimen().arm_thickness());
       sum += std::pow(load[i] - rec.load[i], 2);
       w.row({rec.opening[i] / mm, rec.load[i], load[i], rec.crack_length[i] / mm, a[i] / mm});
     }

@@ -27,11 +27,11 @@ void declare_test_section(dealii::ParameterHandler& prm) {
                     "Window in crack length of the direct-energy slope fits in mm; 0: automatic "
                     "(the larger of 10 reading spacings and 4 arm thicknesses).");
   prm.declare_entry("Large displacement correction", "true", dealii::Patterns::Bool(),
-                    "ASTM D5528 / ISO 15024 F (and N with end blocks) on MBT, CC, MCC.");
+                    "ASTM D5528 / ISO 15024 F and N on MBT, CC, MCC.");
   prm.declare_entry("Pin to arm mid-plane", "0", dealii::Patterns::Double(0),
                     "l1 of D5528/ISO 15024 in mm; 0: half the arm thickness (hinges).");
   prm.declare_entry("Pin to block edge", "0", dealii::Patterns::Double(0),
-                    "l2 of D5528/ISO 15024 in mm (end blocks); 0: no blocks, N = 1.");
+                    "l2 of D5528/ISO 15024 in mm (end blocks); 0: no blocks (l2 = 0 in N).");
   prm.declare_entry("Crack back tolerance", "1", dealii::Patterns::Double(0),
                     "Crack readings may fall this far (mm) below the longest earlier reading "
                     "(tracking noise) and are held at it; further is an error.");

@@ -93,15 +93,10 @@ public:
     for (const auto& pr : records_) {
       const auto& rec = *pr.record;
       std::vector<double> model_load, model_a;
-      simulate(pr, p, model_load, model_a);
+      double min_F = 1;
+      simulate(pr, p, model_load, model_a, min_F);
       const double h = pr.specimen.arm_thickness();
-      double min_f = 1;
       for (std::size_t i = 0; i < rec.opening.size(); ++i) {
-        if (settings_.large_displacement) {
-          const double f = large_displacement_factor(rec.opening[i], model_a[i], h);
-          min_f = std::min(min_f, f);
-          model_load[i] /= f;
-        }
         r.push_back((model_load[i] - rec.load[i]) / (settings_.load_scatter * pr.peak_load));
       }
       for (std::size_t i : pr.crack_rows)
@@ -118,7 +113,7 @@ public:
         f.crack_length = rec.crack_length;
         f.model_load = model_load;
         f.model_crack_length = model_a;
-        f.min_F = min_f;
+        f.min_F = min_F;
         double sp = 0, sa = 0;
         for (std::size_t i = 0; i < rec.opening.size(); ++i) {
           sp += std::pow(model_load[i] - rec.load[i], 2);
@@ -147,8 +142,10 @@ public:
   std::string last_failure;
 
 private:
+  /// The beam's P(opening) and a(opening) at the record's openings, mapped onto large
+  /// displacements when asked (`min_F`: the smallest F over the run).
   void simulate(const PreparedRecord& pr, const Parameters& p, std::vector<double>& load,
-                std::vector<double>& a) {
+                std::vector<double>& a, double& min_F) {
     const auto& rec = *pr.record;
     beam::BeamParameters bp = settings_.beam;
     const double a_last = rec.crack_length.back();
@@ -160,7 +157,9 @@ private:
     ++forward_runs;
     try {
       const auto law = law::make_trilinear(trilinear_of(p));
-      const auto run = beam::simulate_dcb(pr.specimen, pr.material, law, p[5], bp);
+      auto run = beam::simulate_dcb(pr.specimen, pr.material, law, p[5], bp);
+      if (settings_.large_displacement)
+        min_F = with_large_displacements(run, pr.specimen.arm_thickness());
       model_at_openings(run, rec.opening, load, a);
     } catch (const std::exception& e) {
       // A law the beam cannot follow from initiation: the model carries no load, a large but
@@ -349,9 +348,26 @@ void model_at_openings(const law::SimulationResult& run, const std::vector<doubl
   }
 }
 
-double large_displacement_factor(double opening, double crack_length, double arm_thickness) {
-  const double r = opening / crack_length;
-  return 1 - 0.3 * r * r - 1.5 * opening * (0.5 * arm_thickness) / (crack_length * crack_length);
+double with_large_displacements(law::SimulationResult& run, double arm_thickness) {
+  const double l1 = 0.5 * arm_thickness; // hinges on the arms' surfaces, no end blocks (l2 = 0)
+  double min_F = 1;
+  for (auto& p : run.rcurve) {
+    const double a = p.a, d_small = p.load_point_opening;
+    if (!(a > 0) || !(d_small > 0))
+      continue;
+    // F and N at the large-displacement opening, which depends on them: two fixed-point passes
+    // from the small one (the change is O((delta/a)^2), the second pass leaves O((delta/a)^4)).
+    double d = d_small, F = 1;
+    for (int pass = 0; pass < 2; ++pass) {
+      F = 1 - 0.3 * (d / a) * (d / a) - 1.5 * d * l1 / (a * a);
+      const double N = 1 - 9.0 / 8.0 * d * l1 / (a * a) - 9.0 / 35.0 * (d / a) * (d / a);
+      d = d_small * N / std::sqrt(F);
+    }
+    p.load_point_opening = d;
+    p.load /= std::sqrt(F);
+    min_F = std::min(min_F, F);
+  }
+  return min_F;
 }
 
 Identification identify_law(const std::vector<analysis::TestRecord>& records,

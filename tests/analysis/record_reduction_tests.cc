@@ -1,5 +1,6 @@
 // R(a) from raw records (record_reduction.h): the shared real records against their author's
 // own G_I column, the energy method against MBT, and the averaging of replicates.
+#include "../common/elastica.h"
 #include "fiberbridge/analysis/line_fit.h"
 #include "fiberbridge/analysis/record_reduction.h"
 #include "fiberbridge/core/csv.h"
@@ -62,8 +63,9 @@ double median(std::vector<double> v) {
 
 // The author's G_I column is MBT without the large-displacement correction: the Delta it
 // implies, 3 P delta / (2 B G_I) - a, is constant along each record to +-0.4 mm (5-95 %), and
-// our MBT without F reproduces G_I at every crack reading to within a few per cent, while with F
-// it falls 2-3 % lower (F = 0.97 at the openings of a third of the crack length reached here).
+// our MBT without F reproduces G_I at every crack reading to within a few per cent; with F and N
+// it is 0.3-0.5 % higher (F/N = 0.99-1 at the openings of a third of the crack length reached
+// here, and N shortens |Delta| a little).
 // Measured medians of R_MBT(no F)/G_I over the readings with G_I > 100 J/m^2: DCB-01 0.989,
 // DCB-02 0.984, DCB-03 0.977, DCB-05 0.977 (docs/verification.md, "Test records"). The residual
 // is the author's |Delta|, 0.9-1.7 mm shorter than ours (fitted, we think, over every row rather
@@ -98,21 +100,108 @@ TEST(RecordReduction, MbtReproducesTheAuthorsGI) {
       EXPECT_NEAR(med, 1.0, 0.03) << name;
       EXPECT_GT(p5, 0.95) << name;
       EXPECT_LT(p95, 1.05) << name;
-      EXPECT_LT(median_with_F, med - 0.01) << name << ": F should lower MBT by > 1 % here";
+      // With F and N together the correction at these openings (delta/a <= 0.35) is small: F/N
+      // is 1 - 0.043 (delta/a)^2 - 0.375 delta l1/a^2 to second order, under 1 %, and N also
+      // enters the compliance fit (|Delta| 0.1-0.6 mm shorter). Measured: +0.3 to +0.5 % on
+      // the median. F alone (N = 1 with hinges, the reduction's former error, see
+      // ElasticaDcbIsReducedExactlyWithFOverN) lowered it by 1.6-2.9 %: 1.5 % separates them.
+      EXPECT_NEAR(median_with_F, med, 0.015) << name << ": F/N should change MBT by < 1.5 % here";
     }
   }
 }
 
+// The large-displacement corrections against an exact solution: a DCB whose arms are
+// inextensible elasticas (loaded on their mid-plane, l1 -> 0, no end blocks), growing at a
+// constant R = 1000 J/m^2 from a = 40 to 120 mm, so that the opening reaches 0.45 of the crack
+// length (the shared records reach 0.35). G of the elastica is exact (J at the clamped root), so
+// every beam-theory reduction with F and N should return R: the compliance is exactly
+// (2 a^3/(3 EI)) N to O((delta/a)^4), so the MBT, CC and MCC fits of C/N are exact
+// (|Delta| = 0, n = 3), and F/N is the elastica's G over 3 P delta/(2 B a) to O((delta/a)^4).
+// Measured with a stand-alone quadrature of the same elastica: F/N is off the exact ratio by
+// -0.003 % at delta/a = 0.32, -0.04 % at 0.5, -0.08 % at 0.6, and the compliance by 0.01-0.06 %
+// over the same range, so 0.3 % bounds the reductions with room for the fits. F alone (N = 1
+// with hinges, as the reduction once did) is 4 % low at delta/a = 0.45; no correction at all is
+// 1 % high there (F/N = 0.99): both fail, and the uncorrected one is checked to be out too.
+TEST(RecordReduction, ElasticaDcbIsReducedExactlyWithFOverN) {
+  const double B = 25 * mm, h = 2.7 * mm, E = 19.3e9, EI = E * B * h * h * h / 12, R = 1000;
+  const double a0 = 40 * mm;
+  TestRecord rec;
+  rec.name = "elastica";
+  rec.source = "elastica DCB (test)";
+  auto add = [&](const exact::ArmElastica& e, double a) {
+    rec.time.push_back(static_cast<double>(rec.load.size()));
+    rec.load.push_back(e.p * EI / (a * a));
+    rec.opening.push_back(2 * e.deflection * a);
+    rec.crack_length.push_back(a);
+    rec.line.push_back(rec.load.size() + 1);
+  };
+  const exact::ArmElastica initiation = exact::elastica_at_G(R, EI, a0, B);
+  double tip_rotation_c = 0;
+  { // the tip rotation at initiation (bisection on p, which rises with the rotation)
+    double lo = 0, hi = 1.3;
+    for (int it = 0; it < 100; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (exact::arm_elastica(mid).p < initiation.p ? lo : hi) = mid;
+    }
+    tip_rotation_c = 0.5 * (lo + hi);
+  }
+  for (int k = 1; k <= 20; ++k) // loading to initiation at a0
+    add(exact::arm_elastica(tip_rotation_c * k / 20), a0);
+  for (double a = a0 + 0.25 * mm; a <= 120 * mm + 1e-9; a += 0.25 * mm)
+    add(exact::elastica_at_G(R, EI, a, B), a);
+
+  TestSpecimen sp;
+  sp.width = B;
+  sp.arm_thickness = h;
+  sp.pin_to_arm_midplane = 1e-9; // the elastica is loaded on its mid-plane: l1 -> 0
+  double worst_corrected = 0, worst_plain = 0, largest = 0;
+  for (bool corrected : {true, false}) {
+    ReduceOptions o;
+    o.large_displacement_correction = corrected;
+    const auto r = reduce_record(rec, sp, o);
+    ASSERT_GT(r.a.size(), 300u);
+    for (std::size_t i = 0; i < r.a.size(); ++i) {
+      const double worst = std::max({std::abs(r.R_MBT[i] / R - 1), std::abs(r.R_CC[i] / R - 1),
+                                     std::abs(r.R_MCC[i] / R - 1)});
+      (corrected ? worst_corrected : worst_plain) =
+          std::max(corrected ? worst_corrected : worst_plain, worst);
+    }
+    largest = r.max_opening_over_a;
+    if (corrected) {
+      // Not a check, a figure for docs/verification.md: the direct energy assumes linear
+      // unloading (U = P delta / 2, seed Eq. 2), which stiffening arms break at large openings.
+      std::vector<double> energy_error;
+      for (std::size_t i = 0; i < r.a.size(); ++i)
+        if (r.a[i] > a0 + r.window) // two-sided windows only
+          energy_error.push_back(r.R_energy[i] / R - 1);
+      std::printf("elastica DCB: direct energy R / R_exact - 1 from %.4f (delta/a %.2f) to %.4f "
+                  "(delta/a %.2f)\n",
+                  energy_error.front(),
+                  r.opening[r.a.size() - energy_error.size()] /
+                      r.a[r.a.size() - energy_error.size()],
+                  energy_error.back(), r.opening.back() / r.a.back());
+      EXPECT_LT(r.mbt_delta, 0.2 * mm) << "a clamped elastica has no root rotation";
+      EXPECT_NEAR(r.cc_n, 3.0, 0.02);
+    }
+  }
+  std::printf("elastica DCB to delta/a = %.3f: worst |R/R_exact - 1| of MBT, CC, MCC %.4f with F "
+              "and N, %.4f without\n",
+              largest, worst_corrected, worst_plain);
+  EXPECT_GT(largest, 0.4);
+  EXPECT_LT(worst_corrected, 0.003);
+  EXPECT_GT(worst_plain, 0.006) << "the test must see the large displacements";
+}
+
 // The direct energy needs no beam theory; where the arms are still nearly linear (opening below
 // a fifth of the crack length) and the window is two-sided, it should agree with MBT. Measured
-// medians of R_energy/R_MBT there with the automatic 10.8 mm window: DCB-01 0.959, DCB-02 0.961,
-// DCB-05 0.951; the energy slope's own band is +-5-10 % (2 s.e.) at these readings, so the 10 %
-// tolerance is that band, not more. DCB-03 does not agree: 0.79. Over da = 5-12 mm its energy R
-// stays at 490-530 J/m^2 while MBT rises from 560 to 710, then the energy R catches up: the crack
-// readings run ahead of the energy dissipated there (a tracked tip ahead of the compliance crack),
-// which the energy method divides by and MBT, which takes its crack from the compliance fit, does
-// not. That is a finding about the record, kept visible here rather than tolerated away
-// (docs/verification.md, "Test records").
+// medians of R_energy/R_MBT there with the automatic 10.8 mm window: DCB-01 0.937, DCB-02 0.936,
+// DCB-05 0.933 (MBT with F and N); the energy slope's own band is +-5-10 % (2 s.e.) at these
+// readings, so the 10 % tolerance is that band, not more. DCB-03 does not agree: 0.79. Over da =
+// 5-12 mm its energy R stays at 490-530 J/m^2 while MBT rises from 560 to 710, then the energy R
+// catches up: the crack readings run ahead of the energy dissipated there (a tracked tip ahead of
+// the compliance crack), which the energy method divides by and MBT, which takes its crack from the
+// compliance fit, does not. That is a finding about the record, kept visible here rather than
+// tolerated away (docs/verification.md, "Test records").
 TEST(RecordReduction, EnergyAgreesWithMbtWhereArmsAreLinear) {
   for (const char* name : shared_records) {
     const auto rec = read_test_records(record_path(name), shared_columns()).at(0);

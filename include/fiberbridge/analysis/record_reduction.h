@@ -14,8 +14,8 @@ struct ReduceOptions {
   /// Width in crack length of the local straight-line fits that differentiate the dissipated
   /// energy [m]; NaN: automatic (record_reduction.cc says how).
   double smoothing_window = NAN;
-  /// ASTM D5528 / ISO 15024 large-displacement correction F (and block correction N when the
-  /// specimen gives end blocks) on MBT, CC and MCC.
+  /// ASTM D5528 / ISO 15024 large-displacement corrections F and N (N with l2 = 0 without end
+  /// blocks: its (delta/a)^2 term is the arms' own) on MBT, CC and MCC.
   bool large_displacement_correction = true;
   /// The plateau is the mean over the last this fraction of each record's crack extension.
   double plateau_fraction = 1.0 / 3.0;
@@ -63,7 +63,8 @@ struct ReducedRecord {
 ///  - MCC: G = 3 P^2 (C/N)^(2/3) F / (2 A1 B 2h), A1 the slope of a/(2h) against (C/N)^(1/3);
 ///  - F = 1 - 3/10 (delta/a)^2 - 3/2 (delta l1/a^2),
 ///    N = 1 - (l2/a)^3 - 9/8 (1 - (l2/a)^2) delta l1/a^2 - 9/35 (delta/a)^2
-///    (l1, l2 from TestSpecimen; l1 = h/2 without blocks, N = 1 without blocks).
+///    (l1, l2 from TestSpecimen; l1 = h/2 and l2 = 0 without blocks). F/N is checked against the
+///    exact elastica of a DCB arm (tests/analysis/record_reduction_tests.cc).
 /// Throws InputError (naming the record's file) if the geometry fails TestSpecimen::check, a0
 /// from the specimen lies beyond the first readings, or fewer than 5 readings lie beyond a0.
 ReducedRecord reduce_record(const TestRecord& record, const TestSpecimen& specimen,

@@ -90,7 +90,7 @@ struct TestSpecimen {
   /// on the arm's surface)
   double pin_to_arm_midplane = NAN;
   /// l2 of ASTM D5528 / ISO 15024: load-pin axis to the end block's inner edge [m]; NaN: no
-  /// end blocks (hinges), so the block correction N is 1
+  /// end blocks (hinges): l2 = 0 in N
   double pin_to_block_edge = NAN;
 
   /// Throws InputError naming `where` when width or arm thickness is missing or not positive,

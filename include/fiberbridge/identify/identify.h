@@ -31,8 +31,8 @@ struct IdentifySettings {
   /// The initial compliance is the slope over the rows before the crack grows (readings within
   /// 3 crack_scatter of a0) whose load lies between these fractions of the record's peak load.
   double compliance_low = 0.1, compliance_high = 0.5;
-  /// Divide the beam's small-rotation load by ISO 15024's large-displacement factor
-  /// F = 1 - (3/10)(delta/a)^2 - (3/2) delta l1/a^2 (l1 = half the arm thickness: hinges).
+  /// Map the beam's small-rotation states onto arms that rotate far with ISO 15024's F and N
+  /// (with_large_displacements below; l1 = half the arm thickness: hinges).
   bool large_displacement = true;
   /// NLopt: "bobyqa" or "sbplx"; evaluations per start; starts (different delta_c guesses).
   std::string algorithm = "bobyqa";
@@ -108,8 +108,13 @@ double modulus_for_compliance(const law::Specimen& specimen, const law::Material
 void model_at_openings(const law::SimulationResult& run, const std::vector<double>& opening,
                        std::vector<double>& load, std::vector<double>& crack_length);
 
-/// ISO 15024's large-displacement factor F(delta, a) with l1 = arm thickness / 2.
-double large_displacement_factor(double opening, double crack_length, double arm_thickness);
+/// Maps a geometrically linear run onto arms that rotate far, in place, with ISO 15024's F and N
+/// (l1 = arm thickness / 2, no end blocks): at each state's crack length a the energy release
+/// rate is G = 3 P delta F / (2 B a N) and the compliance (2 a^3/(3 EI)) N (both checked against
+/// the exact elastica, tests/analysis/record_reduction_tests.cc), so the state that releases the
+/// same G at the same a carries P / sqrt(F) at the opening delta N / sqrt(F). Returns the
+/// smallest F.
+double with_large_displacements(law::SimulationResult& run, double arm_thickness);
 
 /// Identifies one law and J_tip from the records jointly. `specimen` gives width, height and
 /// length; each record's a0 is its first crack reading. `progress` gets occasional lines.
