@@ -115,20 +115,23 @@ private:
   /// sums (damping loss, FLIP kinetic-energy gain, strain energy of the increments) and returns
   /// a particle that left the grid, or -1.
   long update_particles(long begin, long end, double sums[3]);
-  /// Index in grid_.fields() of node (i0 + a, j0 + b) in the field particle p joins there.
-  int field_index(long p, int a, int b) const {
-    const int i = i0_[p] + a, j = j0_[p] + b;
-    const int side = split_column_[i] ? own_side_[p] : row_side_[j];
-    return 2 * (i * grid_.ny() + j) + side;
-  }
   /// Calls f(field index, S, dS/dx, dS/dy) for the 3 x 3 links of particle p, a (x) outer.
+  /// The field index of node (i0 + a, j0 + b) is 2 (i ny + j) + side: on a node column the crack
+  /// splits, the side of the particle's own material; elsewhere the side of the node's row. The
+  /// column and row lookups are made once per particle, not once per link (this is the hot loop
+  /// of scatter and grid-to-particles, issue 16).
   template <class F>
   void for_links(long p, F&& f) const {
     const double *sx = &sx_[3 * p], *sy = &sy_[3 * p];
     const double *dsx = &dsx_[3 * p], *dsy = &dsy_[3 * p];
-    for (int a = 0; a < 3; ++a)
+    const int i0 = i0_[p], j0 = j0_[p], ny = grid_.ny(), own = own_side_[p];
+    const int rows[3] = {row_side_[j0], row_side_[j0 + 1], row_side_[j0 + 2]};
+    for (int a = 0; a < 3; ++a) {
+      const int base = 2 * ((i0 + a) * ny + j0);
+      const bool split = split_column_[i0 + a];
       for (int b = 0; b < 3; ++b)
-        f(field_index(p, a, b), sx[a] * sy[b], dsx[a] * sy[b], sx[a] * dsy[b]);
+        f(base + 2 * b + (split ? own : rows[b]), sx[a] * sy[b], dsx[a] * sy[b], sx[a] * dsy[b]);
+    }
   }
   /// Runs body(begin, end) over the particles in chunks, on the team's threads.
   template <class Body>
