@@ -1746,6 +1746,7 @@ law::SimulationResult DistributedDcbModel<dim>::run() {
         "FEM/Interface sub-intervals" +
         (regularized_law_ ? " (or lower FEM/Rigid law stiffness factor)" : ""));
   note_small_strain_bound(result_);
+  note_zone_resolution(result_, dx_);
   details_.unstable_advances = n_unstable_;
   details_.simulated_law_area = law_->area();
   if (dim == 3 && !material_.plane_stress)
