@@ -232,12 +232,16 @@ void write_identification(SceneContext& ctx, const identify::Identification& id)
 /// identify's independent jobs (identify.h, IdentifyJobRunner) as tasks across the ranks of the
 /// simulation communicator (task_distributor.h): every rank gets every job's result. Inside a task
 /// that communicator is MPI_COMM_SELF, so the jobs then run one after the other. With `log`, each
-/// batch is listed there (fit, what, tasks, the rank of each).
+/// batch is listed there (fit, what, tasks, the rank and the CPU seconds of each).
 identify::IdentifyJobRunner jobs_across_ranks(Json* log, const std::string& fit) {
   return [log, fit](const std::string& what, std::size_t n, const identify::IdentifyJob& job) {
     auto done = run_tasks_across_ranks(n, job, simulation_communicator());
     if (log)
-      log->push_back({{"fit", fit}, {"what", what}, {"tasks", n}, {"ranks", done.rank}});
+      log->push_back({{"fit", fit},
+                      {"what", what},
+                      {"tasks", n},
+                      {"ranks", done.rank},
+                      {"cpu_s", done.cpu_seconds}});
     return std::move(done.output);
   };
 }
@@ -294,7 +298,11 @@ run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
       if (done.rank[t] != 0) // rank 0 keeps the fits the other ranks ran
         keep_finished_unit(ctx.output_dir, units[i], inputs, record);
     }
-    log.push_back({{"fit", "all"}, {"what", "fits"}, {"tasks", todo.size()}, {"ranks", done.rank}});
+    log.push_back({{"fit", "all"},
+                   {"what", "fits"},
+                   {"tasks", todo.size()},
+                   {"ranks", done.rank},
+                   {"cpu_s", done.cpu_seconds}});
   } else {
     for (const auto i : todo) {
       fits[i] = identify::identify_law(of[i], specimen, quoted, settings, progress,

@@ -43,4 +43,16 @@ print(f"share {n}/1 (ratio of medians): {statistics.median(t[n]) / statistics.me
 s = json.load(open(f"{out}/np{n}/summary.json"))
 print("last run: forward runs", s["identify"]["forward_runs"], "; batches",
       [(b["fit"], b["what"], b["ranks"]) for b in s["identify_tasks"]["batches"]])
+# CPU seconds of the jobs (less sensitive to other load than wall times): on idle cores the
+# N-rank identification takes about the sum over batches of its busiest rank's CPU seconds.
+for k in ("1", n):
+    b = json.load(open(f"{out}/np{k}/summary.json"))["identify_tasks"]["batches"]
+    total = sum(sum(x["cpu_s"]) for x in b)
+    busiest = 0.0
+    for x in b:
+        per = {}
+        for r, c in zip(x["ranks"], x["cpu_s"]):
+            per[r] = per.get(r, 0) + c
+        busiest += max(per.values())
+    print(f"last {k}-rank run: job CPU s {total:.2f}, sum over batches of the busiest rank {busiest:.2f}")
 PY
