@@ -130,14 +130,4 @@ Fingerprint identify_inputs(SceneContext& ctx, const std::vector<analysis::TestR
   return fp;
 }
 
-identify::Identification fit_or_restore(SceneContext& ctx, const std::string& unit,
-                                        const Fingerprint& inputs,
-                                        const std::function<identify::Identification()>& fit) {
-  if (const auto kept = find_finished_unit(ctx.output_dir, ctx.resume, unit, inputs))
-    return identification_from_record(*kept);
-  identify::Identification id = fit();
-  keep_finished_unit(ctx.output_dir, unit, inputs, identification_to_record(id));
-  return id;
-}
-
 } // namespace fiberbridge::app

@@ -4,9 +4,12 @@
 // handed to the simulations that follow, as `fit` hands its law.
 #include "fiberbridge/app/identify_resume.h"
 #include "fiberbridge/app/items.h"
+#include "fiberbridge/app/result_codec.h"
 #include "fiberbridge/app/scene.h"
+#include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/output_guard.h"
 #include "fiberbridge/core/plot.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/identify/identify.h"
@@ -17,6 +20,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace fiberbridge::app {
@@ -225,6 +229,93 @@ void write_identification(SceneContext& ctx, const identify::Identification& id)
        "'identified'\n");
 }
 
+/// identify's independent jobs (identify.h, IdentifyJobRunner) as tasks across the ranks of the
+/// simulation communicator (task_distributor.h): every rank gets every job's result. Inside a task
+/// that communicator is MPI_COMM_SELF, so the jobs then run one after the other. With `log`, each
+/// batch is listed there (fit, what, tasks, the rank and the CPU seconds of each).
+identify::IdentifyJobRunner jobs_across_ranks(Json* log, const std::string& fit) {
+  return [log, fit](const std::string& what, std::size_t n, const identify::IdentifyJob& job) {
+    auto done = run_tasks_across_ranks(n, job, simulation_communicator());
+    if (log)
+      log->push_back({{"fit", fit},
+                      {"what", what},
+                      {"tasks", n},
+                      {"ranks", done.rank},
+                      {"cpu_s", done.cpu_seconds}});
+    return std::move(done.output);
+  };
+}
+
+/// The scene's fits (the joint one, then one per record with Identify/Per record), each restored
+/// from its record under --resume, else run; the fits still to run are spread over the ranks
+/// (docs/cluster.md, "identify"):
+///   - one fit left, or one rank: the fits run one after the other, each spreading its own
+///     independent forward runs (optimizer starts, Jacobian runs) over the ranks;
+///   - several fits left on several ranks: each fit is one task (its forward runs then serial on
+///     its rank), the joint fit, which runs every record, first.
+/// Each fit is kept for --resume as soon as it is finished when rank 0 ran it, else by rank 0
+/// after the gather (only rank 0 writes). `tasks` gets the batches with their ranks.
+std::vector<identify::Identification>
+run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
+                    const std::vector<std::vector<analysis::TestRecord>>& of,
+                    const identify::IdentifySettings& settings, const law::Specimen& specimen,
+                    const law::Material& quoted, const Fingerprint& inputs, Json& tasks) {
+  auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
+  std::vector<std::optional<identify::Identification>> fits(units.size());
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < units.size(); ++i)
+    if (const auto kept = find_finished_unit(ctx.output_dir, ctx.resume, units[i], inputs))
+      fits[i] = identification_from_record(*kept);
+    else
+      todo.push_back(i);
+  const MPI_Comm comm = simulation_communicator();
+  int n_ranks = 1;
+  MPI_Comm_size(comm, &n_ranks);
+  tasks = {{"ranks", n_ranks}, {"batches", Json::array()}};
+  Json& log = tasks["batches"];
+  if (todo.size() >= 2 && n_ranks > 1) {
+    if (output_enabled())
+      std::cerr << "fiberbridge: identify: " << todo.size() << " fits as independent tasks on "
+                << n_ranks << " ranks\n";
+    std::vector<double> cost;
+    for (const auto i : todo)
+      cost.push_back(static_cast<double>(of[i].size())); // forward runs per misfit evaluation
+    const auto done = run_tasks_across_ranks(
+        todo.size(),
+        [&](std::size_t t) {
+          const std::size_t i = todo[t];
+          const auto id = identify::identify_law(of[i], specimen, quoted, settings, progress,
+                                                 jobs_across_ranks(nullptr, units[i]));
+          const Json record = identification_to_record(id);
+          keep_finished_unit(ctx.output_dir, units[i], inputs, record); // on rank 0 only
+          return json_to_bytes(record);
+        },
+        comm, cost);
+    for (std::size_t t = 0; t < todo.size(); ++t) {
+      const std::size_t i = todo[t];
+      const Json record = json_from_bytes(done.output[t]);
+      fits[i] = identification_from_record(record);
+      if (done.rank[t] != 0) // rank 0 keeps the fits the other ranks ran
+        keep_finished_unit(ctx.output_dir, units[i], inputs, record);
+    }
+    log.push_back({{"fit", "all"},
+                   {"what", "fits"},
+                   {"tasks", todo.size()},
+                   {"ranks", done.rank},
+                   {"cpu_s", done.cpu_seconds}});
+  } else {
+    for (const auto i : todo) {
+      fits[i] = identify::identify_law(of[i], specimen, quoted, settings, progress,
+                                       jobs_across_ranks(&log, units[i]));
+      keep_finished_unit(ctx.output_dir, units[i], inputs, identification_to_record(*fits[i]));
+    }
+  }
+  std::vector<identify::Identification> out;
+  for (auto& f : fits)
+    out.push_back(std::move(*f));
+  return out;
+}
+
 } // namespace
 
 void check_identify_item(SceneContext& ctx) {
@@ -242,13 +333,19 @@ void run_identify_item(SceneContext& ctx) {
   const auto records = read_scene_records(ctx);
   const law::Specimen specimen = ctx.specimen();
   const law::Material quoted = ctx.material();
-  auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
   // Each fit is a unit of work that --resume restores once finished (identify_resume.h).
   const Fingerprint inputs = identify_inputs(ctx, records);
-  auto id =
-      std::make_shared<identify::Identification>(fit_or_restore(ctx, "identify_joint", inputs, [&] {
-        return identify::identify_law(records, specimen, quoted, settings, progress);
-      }));
+  std::vector<std::string> units = {"identify_joint"};
+  std::vector<std::vector<analysis::TestRecord>> of = {records};
+  const bool each_record = per_record && records.size() > 1;
+  if (each_record)
+    for (std::size_t k = 0; k < records.size(); ++k) {
+      units.push_back("identify_record_" + std::to_string(k + 1));
+      of.push_back({records[k]});
+    }
+  Json tasks;
+  auto fits = run_or_restore_fits(ctx, units, of, settings, specimen, quoted, inputs, tasks);
+  auto id = std::make_shared<identify::Identification>(std::move(fits[0]));
   Json block = identification_json(*id);
   block["modulus"] = settings.calibrate_modulus
                          ? "E_L calibrated per record from the initial compliance (CBT)"
@@ -258,20 +355,19 @@ void run_identify_item(SceneContext& ctx) {
                   [](const analysis::TestRecord& r) { return !r.delta_root.empty(); }))
     block["notes"].push_back("delta_root measured: with 'extract' in Run (after reduce) the "
                              "scene compares Eq. 5/6, dR/ddelta and this law (law_routes)");
-  if (per_record && records.size() > 1) {
+  if (each_record) {
     Json each = Json::array();
     for (std::size_t k = 0; k < records.size(); ++k) {
-      const auto& r = records[k];
-      const auto one = fit_or_restore(ctx, "identify_record_" + std::to_string(k + 1), inputs, [&] {
-        return identify::identify_law({r}, specimen, quoted, settings, progress);
-      });
-      Json j = identification_json(one);
-      j["record"] = r.name;
+      Json j = identification_json(fits[k + 1]);
+      j["record"] = records[k].name;
       each.push_back(j);
     }
     block["per_record"] = each;
   }
   ctx.summary["identify"] = block;
+  // Which rank ran which job (not part of the identification: the rest of the summary is the
+  // same on 1 and N ranks).
+  ctx.summary["identify_tasks"] = tasks;
   write_identification(ctx, *id);
   // Later simulations get the identified law, J_tip and the first record's specimen.
   ctx.fitted_law = std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(id->law));

@@ -11,8 +11,11 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 namespace fiberbridge::identify {
 
@@ -23,6 +26,89 @@ namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+/// A job's result as bytes (IdentifyJobRunner): doubles and integers copied bit for bit, so a
+/// result computed in another process is the one this process would have computed.
+class ByteWriter {
+public:
+  void number(double v) { put(v); }
+  void integer(std::int64_t v) { put(v); }
+  void text(const std::string& v) {
+    integer(static_cast<std::int64_t>(v.size()));
+    bytes += v;
+  }
+  void numbers(const std::vector<double>& v) {
+    integer(static_cast<std::int64_t>(v.size()));
+    bytes.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
+  }
+  std::string bytes;
+
+private:
+  template <class T>
+  void put(const T& v) {
+    bytes.append(reinterpret_cast<const char*>(&v), sizeof(T));
+  }
+};
+
+class ByteReader {
+public:
+  explicit ByteReader(const std::string& b) : p_(b.data()), end_(b.data() + b.size()) {}
+  double number() { return take<double>(); }
+  std::int64_t integer() { return take<std::int64_t>(); }
+  std::string text() {
+    const auto n = static_cast<std::size_t>(integer());
+    need(n);
+    std::string v(p_, n);
+    p_ += n;
+    return v;
+  }
+  std::vector<double> numbers() {
+    const auto n = static_cast<std::size_t>(integer());
+    need(n * sizeof(double));
+    std::vector<double> v(n);
+    if (n)
+      std::memcpy(v.data(), p_, n * sizeof(double));
+    p_ += n * sizeof(double);
+    return v;
+  }
+
+private:
+  void need(std::size_t n) const {
+    if (static_cast<std::size_t>(end_ - p_) < n)
+      throw std::logic_error("identify: a job's result is shorter than its format");
+  }
+  template <class T>
+  T take() {
+    need(sizeof(T));
+    T v;
+    std::memcpy(&v, p_, sizeof(T));
+    p_ += sizeof(T);
+    return v;
+  }
+  const char* p_;
+  const char* end_;
+};
+
+void write_fit(ByteWriter& w, const RecordFit& f) {
+  w.text(f.name);
+  for (double v : {f.initial_crack, f.initial_compliance, f.E_L, f.peak_load, f.load_rms_rel,
+                   f.crack_rms, f.max_opening_over_a, f.min_F})
+    w.number(v);
+  for (const auto* v :
+       {&f.opening, &f.load, &f.crack_length, &f.model_load, &f.model_crack_length})
+    w.numbers(*v);
+}
+
+RecordFit read_fit(ByteReader& r) {
+  RecordFit f;
+  f.name = r.text();
+  for (double* v : {&f.initial_crack, &f.initial_compliance, &f.E_L, &f.peak_load,
+                    &f.load_rms_rel, &f.crack_rms, &f.max_opening_over_a, &f.min_F})
+    *v = r.number();
+  for (auto* v : {&f.opening, &f.load, &f.crack_length, &f.model_load, &f.model_crack_length})
+    *v = r.numbers();
+  return f;
 }
 
 /// Physical parameters in the order of the report: d1, s1, d2, s2, dc [m, Pa], J_tip [J/m^2].
@@ -215,6 +301,7 @@ struct ObjectiveData {
   int evaluations = 0;
   double best = std::numeric_limits<double>::infinity();
   const std::function<void(const std::string&)>* progress;
+  std::string label; ///< which optimizer run, for the progress lines
 };
 
 double objective(const std::vector<double>& u, std::vector<double>&, void* data) {
@@ -223,8 +310,8 @@ double objective(const std::vector<double>& u, std::vector<double>&, void* data)
   ++d.evaluations;
   d.best = std::min(d.best, f);
   if (*d.progress && d.evaluations % 50 == 0)
-    (*d.progress)("identify: " + std::to_string(d.evaluations) + " evaluations, best chi^2 " +
-                  fmt(d.best));
+    (*d.progress)("identify: " + d.label + ": " + std::to_string(d.evaluations) +
+                  " evaluations, best chi^2 " + fmt(d.best));
   return f;
 }
 
@@ -248,7 +335,85 @@ double run_optimizer(const IdentifySettings& settings, ObjectiveData& data, doub
   return f;
 }
 
+/// The forward-run bookkeeping of one job (its own Misfit), summed over the jobs in job order:
+/// the totals and the last failure are those of the serial run.
+struct RunCounts {
+  int evaluations = 0;
+  int forward_runs = 0;
+  double forward_time_s = 0;
+  std::string last_failure;
+
+  /// A job's part: its own Misfit's counts and `evals` optimizer evaluations.
+  static void write(ByteWriter& w, const Misfit& m, int evals) {
+    w.integer(evals);
+    w.integer(m.forward_runs);
+    w.number(m.forward_time_s);
+    w.text(m.last_failure);
+  }
+  void add(ByteReader& r) {
+    evaluations += static_cast<int>(r.integer());
+    forward_runs += static_cast<int>(r.integer());
+    forward_time_s += r.number();
+    const std::string failure = r.text();
+    if (!failure.empty())
+      last_failure = failure;
+  }
+};
+
+/// One optimizer run (a start or a polish round) as a job: its misfit reached, NLopt's code and
+/// its end point.
+struct OptimizerRun {
+  double f = 0;
+  int code = 0;
+  std::vector<double> u;
+};
+
+std::string optimizer_job(const std::vector<PreparedRecord>& prepared,
+                          const IdentifySettings& settings, const Mapping& mapping,
+                          const std::function<void(const std::string&)>& progress,
+                          const std::string& label, std::vector<double> u, double tolerance,
+                          double initial_step) {
+  Misfit misfit(prepared, settings);
+  ObjectiveData data{&misfit, &mapping, 0, std::numeric_limits<double>::infinity(), &progress,
+                     label};
+  nlopt::result code{};
+  const double f = run_optimizer(settings, data, tolerance, initial_step, u, code);
+  ByteWriter w;
+  w.number(f);
+  w.integer(static_cast<int>(code));
+  w.numbers(u);
+  RunCounts::write(w, misfit, data.evaluations);
+  return w.bytes;
+}
+
+OptimizerRun read_optimizer_run(const std::string& bytes, RunCounts& counts) {
+  ByteReader r(bytes);
+  OptimizerRun run;
+  run.f = r.number();
+  run.code = static_cast<int>(r.integer());
+  run.u = r.numbers();
+  counts.add(r);
+  return run;
+}
+
+std::vector<std::string> run_batch(const IdentifyJobRunner& run_jobs, const std::string& what,
+                                   std::size_t n, const IdentifyJob& job) {
+  auto out = run_jobs ? run_jobs(what, n, job) : serial_jobs(what, n, job);
+  if (out.size() != n)
+    throw std::logic_error("identify: the job runner returned " + std::to_string(out.size()) +
+                           " results for " + std::to_string(n) + " " + what + " jobs");
+  return out;
+}
+
 } // namespace
+
+std::vector<std::string> serial_jobs(const std::string&, std::size_t n, const IdentifyJob& job) {
+  std::vector<std::string> out;
+  out.reserve(n);
+  for (std::size_t i = 0; i < n; ++i)
+    out.push_back(job(i));
+  return out;
+}
 
 void IdentifySettings::validate(const std::string& c) const {
   if (!(delta_c_min > 0 && delta_c_max > delta_c_min))
@@ -373,7 +538,8 @@ double with_large_displacements(law::SimulationResult& run, double arm_thickness
 Identification identify_law(const std::vector<analysis::TestRecord>& records,
                             const law::Specimen& specimen, const law::Material& quoted,
                             const IdentifySettings& settings,
-                            const std::function<void(const std::string&)>& progress) {
+                            const std::function<void(const std::string&)>& progress,
+                            const IdentifyJobRunner& run_jobs) {
   const auto t0 = std::chrono::steady_clock::now();
   settings.validate();
   if (records.empty())
@@ -399,60 +565,98 @@ Identification identify_law(const std::vector<analysis::TestRecord>& records,
     prepared.push_back(pr);
   }
 
-  Misfit misfit(prepared, settings);
   const Mapping mapping(settings);
   Identification out;
-  ObjectiveData data{&misfit, &mapping, 0, std::numeric_limits<double>::infinity(), &progress};
+  RunCounts counts; // over every job, in the serial order
   std::vector<double> best_u;
   double best_f = std::numeric_limits<double>::infinity();
-  // Starts differ in delta_c (the parameter the record constrains least directly).
+  // Starts differ in delta_c (the parameter the record constrains least directly). They are
+  // independent: one job each.
   const double dc_factors[] = {0.5, 1.5, 0.2, 3.0};
+  const auto starts = run_batch(run_jobs, "starts", settings.starts, [&](std::size_t s) {
+    const Parameters p0 =
+        start_value(prepared, settings, dc_factors[s % 4] * (1 + static_cast<int>(s) / 4));
+    return optimizer_job(prepared, settings, mapping, progress,
+                         "start " + std::to_string(s + 1), mapping.normalized(p0),
+                         settings.relative_tolerance, 0.1);
+  });
   for (int s = 0; s < settings.starts; ++s) {
-    const Parameters p0 = start_value(prepared, settings, dc_factors[s % 4] * (1 + s / 4));
-    std::vector<double> u = mapping.normalized(p0);
-    nlopt::result code{};
-    const double f = run_optimizer(settings, data, settings.relative_tolerance, 0.1, u, code);
+    const OptimizerRun run = read_optimizer_run(starts[s], counts);
     out.notes.push_back("start " + std::to_string(s + 1) + ": NLopt " + settings.algorithm +
-                        " stopped with code " + std::to_string(static_cast<int>(code)) +
-                        " at chi^2 " + fmt(f));
-    if (f < best_f) {
-      best_f = f;
-      best_u = u;
+                        " stopped with code " + std::to_string(run.code) + " at chi^2 " +
+                        fmt(run.f));
+    if (run.f < best_f) {
+      best_f = run.f;
+      best_u = run.u;
     }
   }
   // Polish: BOBYQA again from the best point with a small trust region (the first runs stop on
   // the relative tolerance while the d2-s2 valley is still being followed). A restart rebuilds
   // the optimizer's quadratic model, which a long curved valley leaves stale, so the polish is
   // repeated while a round still lowers chi^2 by more than 1 % (at most kPolishRounds rounds).
+  // Each round depends on the last: a batch of one job (one process runs it, the others wait).
   constexpr int kPolishRounds = 4;
   for (int round = 0; round < kPolishRounds; ++round) {
-    std::vector<double> u = best_u;
-    nlopt::result code{};
-    const double f =
-        run_optimizer(settings, data, 0.1 * settings.relative_tolerance, 0.02, u, code);
+    const auto polished = run_batch(run_jobs, "polish", 1, [&](std::size_t) {
+      return optimizer_job(prepared, settings, mapping, progress,
+                           "polish " + std::to_string(round + 1), best_u,
+                           0.1 * settings.relative_tolerance, 0.02);
+    });
+    const OptimizerRun run = read_optimizer_run(polished[0], counts);
+    const double f = run.f;
     out.notes.push_back("polish " + std::to_string(round + 1) + " from the best point: chi^2 " +
                         fmt(best_f) + " -> " + fmt(f));
     const bool improved_enough = f < 0.99 * best_f;
     if (f < best_f) {
       best_f = f;
-      best_u = u;
+      best_u = run.u;
     }
     if (!improved_enough)
       break;
   }
-  out.evaluations = data.evaluations;
+  out.evaluations = counts.evaluations;
   const Parameters best = mapping.physical(best_u);
 
   // Uncertainty: Jacobian of the weighted residuals by central differences (2 % steps: the
-  // beam's discrete advances make the misfit piecewise smooth below about 1 %).
-  const std::vector<double> r0 = misfit.residuals(best, &out.records);
+  // beam's discrete advances make the misfit piecewise smooth below about 1 %). Job 0 is the
+  // optimum itself (with the model curves), jobs 2j+1 and 2j+2 parameter j up and down.
+  const auto jacobian_runs =
+      run_batch(run_jobs, "jacobian", 1 + 2 * n_parameters, [&](std::size_t k) {
+        Misfit misfit(prepared, settings);
+        ByteWriter w;
+        if (k == 0) {
+          std::vector<RecordFit> fits;
+          w.numbers(misfit.residuals(best, &fits));
+          w.integer(static_cast<std::int64_t>(fits.size()));
+          for (const auto& f : fits)
+            write_fit(w, f);
+        } else {
+          const int j = static_cast<int>(k - 1) / 2;
+          Parameters p = best;
+          const double step = 0.02 * best[j];
+          if ((k - 1) % 2 == 0)
+            p[j] += step;
+          else
+            p[j] -= step;
+          w.numbers(misfit.residuals(p));
+        }
+        RunCounts::write(w, misfit, 0);
+        return w.bytes;
+      });
+  std::vector<std::vector<double>> residuals_of(jacobian_runs.size());
+  for (std::size_t k = 0; k < jacobian_runs.size(); ++k) {
+    ByteReader r(jacobian_runs[k]);
+    residuals_of[k] = r.numbers();
+    if (k == 0)
+      for (auto n = r.integer(); n > 0; --n)
+        out.records.push_back(read_fit(r));
+    counts.add(r);
+  }
+  const std::vector<double>& r0 = residuals_of[0];
   std::vector<std::vector<double>> jac(r0.size(), std::vector<double>(n_parameters));
   for (int j = 0; j < n_parameters; ++j) {
-    Parameters plus = best, minus = best;
     const double step = 0.02 * best[j];
-    plus[j] += step;
-    minus[j] -= step;
-    const auto rp = misfit.residuals(plus), rm = misfit.residuals(minus);
+    const auto &rp = residuals_of[1 + 2 * j], &rm = residuals_of[2 + 2 * j];
     for (std::size_t i = 0; i < r0.size(); ++i)
       jac[i][j] = (rp[i] - rm[i]) / (2 * step);
   }
@@ -525,11 +729,11 @@ Identification identify_law(const std::vector<analysis::TestRecord>& records,
   }
   out.load_rms_rel = std::sqrt(sp / np);
   out.crack_rms = na ? std::sqrt(sa / na) : 0;
-  if (!misfit.last_failure.empty())
-    out.notes.push_back("some trial laws could not be simulated (last: " + misfit.last_failure +
+  if (!counts.last_failure.empty())
+    out.notes.push_back("some trial laws could not be simulated (last: " + counts.last_failure +
                         "); they were scored as carrying no load");
-  out.forward_runs = misfit.forward_runs;
-  out.forward_time_s = misfit.forward_time_s;
+  out.forward_runs = counts.forward_runs;
+  out.forward_time_s = counts.forward_time_s;
   out.wall_time_s = seconds_since(t0);
   return out;
 }

@@ -10,7 +10,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace fiberbridge;
 using namespace fiberbridge::identify;
@@ -152,4 +155,60 @@ TEST(Identify, LargeDisplacementMappingMatchesTheElastica) {
   EXPECT_GT(largest, 0.4);
   EXPECT_LT(worst, 0.005);
   EXPECT_GT(worst_linear, 0.02) << "the case must reach large displacements";
+}
+
+// The job runner (issue 16 section 2): the app runs identify's independent jobs on any rank in
+// any order; the identification must not depend on it. A runner that runs each batch backwards
+// (and records the batches) gives the serial result bit for bit.
+TEST(Identify, JobRunnerOrderDoesNotChangeTheResult) {
+  const auto rec = shared_record("DCB-05");
+  IdentifySettings s;
+  s.starts = 3;
+  s.max_evaluations = 20;
+  s.relative_tolerance = 1e-2;
+  s.beam.n_elements = 40;
+  s.beam.tip_advance = 2 * mm;
+  const auto serial = identify_law({rec}, record_specimen(), record_material(19.3e9), s);
+  std::vector<std::pair<std::string, std::size_t>> batches;
+  const IdentifyJobRunner backwards = [&](const std::string& what, std::size_t n,
+                                          const IdentifyJob& job) {
+    batches.emplace_back(what, n);
+    std::vector<std::string> out(n);
+    for (std::size_t i = n; i-- > 0;)
+      out[i] = job(i);
+    return out;
+  };
+  const auto other =
+      identify_law({rec}, record_specimen(), record_material(19.3e9), s, {}, backwards);
+  ASSERT_GE(batches.size(), 3u);
+  EXPECT_EQ(batches.front(), std::make_pair(std::string("starts"), std::size_t(3)));
+  EXPECT_EQ(batches.back(), std::make_pair(std::string("jacobian"), std::size_t(13)));
+  for (std::size_t b = 1; b + 1 < batches.size(); ++b)
+    EXPECT_EQ(batches[b], std::make_pair(std::string("polish"), std::size_t(1)));
+  // Bit for bit: the same doubles (memcmp, so NaN compares too), counts and notes.
+  auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  auto same_all = [](const std::vector<double>& a, const std::vector<double>& b) {
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+  };
+  EXPECT_TRUE(same(serial.law.d1, other.law.d1) && same(serial.law.s1, other.law.s1) &&
+              same(serial.law.d2, other.law.d2) && same(serial.law.s2, other.law.s2) &&
+              same(serial.law.dc, other.law.dc) && same(serial.j_tip, other.j_tip));
+  EXPECT_TRUE(same(serial.chi2, other.chi2));
+  EXPECT_TRUE(same(serial.j_c_std_error, other.j_c_std_error));
+  EXPECT_EQ(serial.evaluations, other.evaluations);
+  EXPECT_EQ(serial.forward_runs, other.forward_runs);
+  EXPECT_EQ(serial.notes, other.notes);
+  ASSERT_EQ(serial.parameters.size(), other.parameters.size());
+  for (std::size_t j = 0; j < serial.parameters.size(); ++j)
+    EXPECT_TRUE(same(serial.parameters[j].value, other.parameters[j].value) &&
+                same(serial.parameters[j].std_error, other.parameters[j].std_error))
+        << serial.parameters[j].name;
+  ASSERT_EQ(serial.records.size(), 1u);
+  ASSERT_EQ(other.records.size(), 1u);
+  EXPECT_TRUE(same_all(serial.records[0].model_load, other.records[0].model_load));
+  EXPECT_TRUE(same_all(serial.records[0].model_crack_length, other.records[0].model_crack_length));
+  EXPECT_TRUE(same(serial.records[0].min_F, other.records[0].min_F));
+  EXPECT_TRUE(same_all(serial.band_lo, other.band_lo));
+  EXPECT_TRUE(same_all(serial.band_hi, other.band_hi));
 }

@@ -1,7 +1,9 @@
 #pragma once
 // identify's units of work for `--resume` (resume_store.h): the joint fit of all records and,
 // with Identify/Per record, each record's own fit. A finished fit is kept bit for bit in the
-// output directory's resume/ folder, tied to the scene's parameters and the records' data.
+// output directory's resume/ folder, tied to the scene's parameters and the records' data
+// (find_finished_unit/keep_finished_unit, called by item_identify.cc, which also spreads the
+// fits over MPI ranks). The same record carries a fit from the rank that ran it to rank 0.
 #include "fiberbridge/analysis/test_record.h"
 #include "fiberbridge/app/resume_store.h"
 #include "fiberbridge/identify/identify.h"
@@ -19,10 +21,5 @@ identify::Identification identification_from_record(const Json& j);
 /// The scene's parameters and, per record, its name and a hash of its rows (a changed data file
 /// is a changed input even when the scene is not).
 Fingerprint identify_inputs(SceneContext& ctx, const std::vector<analysis::TestRecord>& records);
-
-/// The fit `unit`, restored from its record when resuming, else run by `fit` and kept.
-identify::Identification fit_or_restore(SceneContext& ctx, const std::string& unit,
-                                        const Fingerprint& inputs,
-                                        const std::function<identify::Identification()>& fit);
 
 } // namespace fiberbridge::app

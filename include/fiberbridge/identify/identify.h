@@ -116,11 +116,32 @@ void model_at_openings(const law::SimulationResult& run, const std::vector<doubl
 /// smallest F.
 double with_large_displacements(law::SimulationResult& run, double arm_thickness);
 
+/// A job of an identification: one independent piece of forward runs (an optimizer start, a
+/// polish round, a Jacobian column's perturbed run), its result serialized to bytes.
+using IdentifyJob = std::function<std::string(std::size_t)>;
+
+/// How an identification runs its independent jobs: job(i) for every i in [0, n), the results
+/// returned in job order. `what` names the batch ("starts", "polish", "jacobian") for a log.
+/// The jobs only read shared state, so a runner may run them in any order, on any process that
+/// called identify_law with the same arguments (the app spreads them over MPI ranks,
+/// app/task_distributor.h); every caller must get every result. Collective when the runner is.
+/// An empty runner runs them one after the other, in order (serial_jobs).
+using IdentifyJobRunner = std::function<std::vector<std::string>(
+    const std::string& what, std::size_t n, const IdentifyJob& job)>;
+
+/// The default runner: job(0), job(1), ... in this process.
+std::vector<std::string> serial_jobs(const std::string& what, std::size_t n,
+                                     const IdentifyJob& job);
+
 /// Identifies one law and J_tip from the records jointly. `specimen` gives width, height and
 /// length; each record's a0 is its first crack reading. `progress` gets occasional lines.
+/// `run_jobs` runs the independent forward runs (the optimizer starts, each polish round, the
+/// Jacobian's perturbed runs); the result is the same, bit for bit, whatever runner runs them
+/// where (each job's result crosses as raw bytes and the merge follows the serial order).
 Identification identify_law(const std::vector<analysis::TestRecord>& records,
                             const law::Specimen& specimen, const law::Material& quoted,
                             const IdentifySettings& settings,
-                            const std::function<void(const std::string&)>& progress = {});
+                            const std::function<void(const std::string&)>& progress = {},
+                            const IdentifyJobRunner& run_jobs = {});
 
 } // namespace fiberbridge::identify
