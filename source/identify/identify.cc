@@ -181,10 +181,8 @@ public:
       std::vector<double> model_load, model_a;
       double min_F = 1;
       simulate(pr, p, model_load, model_a, min_F);
-      const double h = pr.specimen.arm_thickness();
-      for (std::size_t i = 0; i < rec.opening.size(); ++i) {
+      for (std::size_t i = 0; i < rec.opening.size(); ++i)
         r.push_back((model_load[i] - rec.load[i]) / (settings_.load_scatter * pr.peak_load));
-      }
       for (std::size_t i : pr.crack_rows)
         r.push_back((model_a[i] - rec.crack_length[i]) / settings_.crack_scatter);
       if (fits) {
