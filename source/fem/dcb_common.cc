@@ -195,9 +195,10 @@ double note_zone_resolution(law::SimulationResult& result, double element_length
   const double elements = zone / element_length;
   if (elements < kMinZoneElements)
     result.notes.push_back(
-        "resolution: the cohesive zone is at most " + fmt(zone / units::mm, 3) + " mm long (at a = " +
-        fmt(zone_a / units::mm) + " mm), " + fmt(elements, 2) + " elements of " +
-        fmt(element_length / units::mm, 3) + " mm, fewer than the " + fmt(kMinZoneElements) +
+        "resolution: the cohesive zone is at most " + fmt(zone / units::mm, 3) +
+        " mm long (at a = " + fmt(zone_a / units::mm) + " mm), " + fmt(elements, 2) +
+        " elements of " + fmt(element_length / units::mm, 3) + " mm, fewer than the " +
+        fmt(kMinZoneElements) +
         " a cohesive zone needs: R_energy per advance and the rise of the R curve are coarse "
         "here (R_J and G_ss less so); FEM/Element size at most " +
         fmt(zone / kMinZoneElements / units::mm, 3) + " mm resolves it");

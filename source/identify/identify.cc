@@ -95,16 +95,15 @@ void write_fit(ByteWriter& w, const RecordFit& f) {
   for (double v : {f.initial_crack, f.initial_compliance, f.E_L, f.peak_load, f.load_rms_rel,
                    f.crack_rms, f.max_opening_over_a, f.min_F})
     w.number(v);
-  for (const auto* v :
-       {&f.opening, &f.load, &f.crack_length, &f.model_load, &f.model_crack_length})
+  for (const auto* v : {&f.opening, &f.load, &f.crack_length, &f.model_load, &f.model_crack_length})
     w.numbers(*v);
 }
 
 RecordFit read_fit(ByteReader& r) {
   RecordFit f;
   f.name = r.text();
-  for (double* v : {&f.initial_crack, &f.initial_compliance, &f.E_L, &f.peak_load,
-                    &f.load_rms_rel, &f.crack_rms, &f.max_opening_over_a, &f.min_F})
+  for (double* v : {&f.initial_crack, &f.initial_compliance, &f.E_L, &f.peak_load, &f.load_rms_rel,
+                    &f.crack_rms, &f.max_opening_over_a, &f.min_F})
     *v = r.number();
   for (auto* v : {&f.opening, &f.load, &f.crack_length, &f.model_load, &f.model_crack_length})
     *v = r.numbers();
@@ -372,8 +371,8 @@ std::string optimizer_job(const std::vector<PreparedRecord>& prepared,
                           const std::string& label, std::vector<double> u, double tolerance,
                           double initial_step) {
   Misfit misfit(prepared, settings);
-  ObjectiveData data{&misfit, &mapping, 0, std::numeric_limits<double>::infinity(), &progress,
-                     label};
+  ObjectiveData data{&misfit,   &mapping, 0, std::numeric_limits<double>::infinity(),
+                     &progress, label};
   nlopt::result code{};
   const double f = run_optimizer(settings, data, tolerance, initial_step, u, code);
   ByteWriter w;
@@ -574,9 +573,8 @@ Identification identify_law(const std::vector<analysis::TestRecord>& records,
   const auto starts = run_batch(run_jobs, "starts", settings.starts, [&](std::size_t s) {
     const Parameters p0 =
         start_value(prepared, settings, dc_factors[s % 4] * (1 + static_cast<int>(s) / 4));
-    return optimizer_job(prepared, settings, mapping, progress,
-                         "start " + std::to_string(s + 1), mapping.normalized(p0),
-                         settings.relative_tolerance, 0.1);
+    return optimizer_job(prepared, settings, mapping, progress, "start " + std::to_string(s + 1),
+                         mapping.normalized(p0), settings.relative_tolerance, 0.1);
   });
   for (int s = 0; s < settings.starts; ++s) {
     const OptimizerRun run = read_optimizer_run(starts[s], counts);
