@@ -214,10 +214,15 @@ void write_identification(SceneContext& ctx, const identify::Identification& id)
     if (run_gnuplot(ctx.output_dir, gnuplot_png_preamble(png) + head + body))
       ctx.summary["plots"].push_back(png);
   };
+  // Headroom above the highest load of any record (gnuplot's autoscale stops at the next tic and
+  // cut DCB-01's peak at 100 N), the key top right, away from the rising branches.
+  double peak = 0;
+  for (const auto& r : id.records)
+    peak = std::max(peak, r.peak_load);
   plot("identify_load_opening.png",
        "set title 'identify: measured and simulated P(opening)'\nset xlabel 'load-line opening "
-       "(mm)'\nset ylabel 'load (N)'\n" +
-           load_plot + "\n");
+       "(mm)'\nset ylabel 'load (N)'\nset key top right\nset yrange [0:" +
+           std::to_string(1.1 * peak) + "]\n" + load_plot + "\n");
   plot("identify_crack_opening.png",
        "set title 'identify: measured and simulated a(opening)'\nset xlabel 'load-line opening "
        "(mm)'\nset ylabel 'crack length (mm)'\nset key bottom right\n" +
