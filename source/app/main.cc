@@ -283,6 +283,11 @@ int cmd_reduce(const std::vector<std::string>& args) {
 }
 
 int main(int argc, char** argv) {
+  // Started without mpirun, Open MPI 4.1's singleton start forks a runtime daemon (orted) before
+  // main can run: about 0.3 s of every invocation (docs/verification.md, "Process start"). No
+  // command spawns processes, so the singleton runs isolated. A user's own setting wins; under
+  // mpirun or srun the variable is never read (those starts are not singletons).
+  setenv("OMPI_MCA_ess_singleton_isolated", "1", /*overwrite=*/0);
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // Under mpirun every rank runs the command (the distributed FEM is collective); rank 0 alone
   // writes the shared files and prints (core/output_guard.h). Errors found identically on all
