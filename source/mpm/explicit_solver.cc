@@ -76,7 +76,7 @@ FB_INLINE void ugimp_lanes(VD r, const UgimpAxis& A, VD& S, VD& dS) {
 /// third node's weight and derivative are zero). W particles at a time, the rest one by one
 /// with detail::ugimp: the same arithmetic either way, the same weights to the bit.
 template <class VD, class VI>
-FB_INLINE void weights_axis(const double* pos, long begin, long end, double origin,
+FB_INLINE void weights_axis(const double* pos, long begin, long end, long n, double origin,
                             const UgimpAxis& A, int* first, double* S, double* dS,
                             unsigned char* n_links) {
   constexpr int W = sizeof(VD) / sizeof(double);
@@ -95,10 +95,8 @@ FB_INLINE void weights_axis(const double* pos, long begin, long end, double orig
     VD Sk, dSk;
     for (int k = 0; k < 3; ++k) {
       ugimp_lanes<VD, VI>(x - (origin + (fd + k) * A.cell), A, Sk, dSk);
-      for (int l = 0; l < W; ++l) {
-        S[3 * (p + l) + k] = Sk[l];
-        dS[3 * (p + l) + k] = dSk[l];
-      }
+      std::memcpy(S + k * n + p, &Sk, sizeof Sk);
+      std::memcpy(dS + k * n + p, &dSk, sizeof dSk);
     }
     // Without a branch: the pattern follows the particles' positions in their cells.
     const VI third = reinterpret_cast<VI>(Sk != 0.0) | reinterpret_cast<VI>(dSk != 0.0);
@@ -110,38 +108,37 @@ FB_INLINE void weights_axis(const double* pos, long begin, long end, double orig
     const int t = static_cast<int>(q);
     const int f = t - (q < static_cast<double>(t));
     first[p] = f;
-    detail::ugimp(pos[p] - (origin + f * A.cell), A, S[3 * p], dS[3 * p]);
-    detail::ugimp(pos[p] - (origin + (f + 1) * A.cell), A, S[3 * p + 1], dS[3 * p + 1]);
-    detail::ugimp(pos[p] - (origin + (f + 2) * A.cell), A, S[3 * p + 2], dS[3 * p + 2]);
-    n_links[p] = static_cast<unsigned char>(2 + ((S[3 * p + 2] != 0) | (dS[3 * p + 2] != 0)));
+    detail::ugimp(pos[p] - (origin + f * A.cell), A, S[p], dS[p]);
+    detail::ugimp(pos[p] - (origin + (f + 1) * A.cell), A, S[n + p], dS[n + p]);
+    detail::ugimp(pos[p] - (origin + (f + 2) * A.cell), A, S[2 * n + p], dS[2 * n + p]);
+    n_links[p] = static_cast<unsigned char>(2 + ((S[2 * n + p] != 0) | (dS[2 * n + p] != 0)));
   }
 }
 
-using WeightsAxisFn = void (*)(const double*, long, long, double, const UgimpAxis&, int*, double*,
-                               double*, unsigned char*);
+using WeightsAxisFn = void (*)(const double*, long, long, long, double, const UgimpAxis&, int*,
+                               double*, double*, unsigned char*);
 
 // The same kernel for 2 lanes (SSE2, any x86-64), and, chosen at run time where the processor
 // has them, 4 (AVX2) and 8 (AVX-512) lanes. Only the lane count differs: no fused multiply-add
 // (the targets below do not enable FMA), so the weights are the same to the bit on any of them.
-void weights_axis_2(const double* pos, long begin, long end, double origin, const UgimpAxis& A,
-                    int* first, double* S, double* dS, unsigned char* n_links) {
-  weights_axis<v2d, v2i>(pos, begin, end, origin, A, first, S, dS, n_links);
+void weights_axis_2(const double* pos, long begin, long end, long n, double origin,
+                    const UgimpAxis& A, int* first, double* S, double* dS, unsigned char* n_links) {
+  weights_axis<v2d, v2i>(pos, begin, end, n, origin, A, first, S, dS, n_links);
 }
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 typedef double v4d __attribute__((vector_size(32)));
 typedef long long v4i __attribute__((vector_size(32)));
 typedef double v8d __attribute__((vector_size(64)));
 typedef long long v8i __attribute__((vector_size(64)));
-__attribute__((target("avx2"))) void weights_axis_4(const double* pos, long begin, long end,
+__attribute__((target("avx2"))) void weights_axis_4(const double* pos, long begin, long end, long n,
                                                     double origin, const UgimpAxis& A, int* first,
-                                                    double* S, double* dS,
-                                                    unsigned char* n_links) {
-  weights_axis<v4d, v4i>(pos, begin, end, origin, A, first, S, dS, n_links);
+                                                    double* S, double* dS, unsigned char* n_links) {
+  weights_axis<v4d, v4i>(pos, begin, end, n, origin, A, first, S, dS, n_links);
 }
 __attribute__((target("avx512f,avx512dq"))) void
-weights_axis_8(const double* pos, long begin, long end, double origin, const UgimpAxis& A,
+weights_axis_8(const double* pos, long begin, long end, long n, double origin, const UgimpAxis& A,
                int* first, double* S, double* dS, unsigned char* n_links) {
-  weights_axis<v8d, v8i>(pos, begin, end, origin, A, first, S, dS, n_links);
+  weights_axis<v8d, v8i>(pos, begin, end, n, origin, A, first, S, dS, n_links);
 }
 WeightsAxisFn pick_weights_axis() {
   __builtin_cpu_init();
@@ -288,14 +285,15 @@ void update_lanes_2(const LaneUpdate& u, long begin, long end) {
 }
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target("avx2"))) void update_lanes_4(const LaneUpdate& u, long begin, long end) {
-  update_all_lanes<v4d>(u, begin, end,
-                        [](v4d v) __attribute__((target("avx2"))) -> v4d { return _mm256_sqrt_pd(v); });
+  update_all_lanes<v4d>(
+      u, begin, end, [](v4d v) __attribute__((target("avx2")))->v4d { return _mm256_sqrt_pd(v); });
 }
 __attribute__((target("avx512f,avx512dq"))) void update_lanes_8(const LaneUpdate& u, long begin,
-                                                                 long end) {
-  update_all_lanes<v8d>(u, begin, end, [](v8d v) __attribute__((target("avx512f"))) -> v8d {
-    return _mm512_mask_sqrt_pd(v, static_cast<__mmask8>(-1), v);
-  });
+                                                                long end) {
+  update_all_lanes<v8d>(
+      u, begin, end, [](v8d v) __attribute__((target("avx512f")))->v8d {
+        return _mm512_mask_sqrt_pd(v, static_cast<__mmask8>(-1), v);
+      });
 }
 UpdateLanesFn pick_update_lanes() {
   __builtin_cpu_init();
@@ -423,9 +421,10 @@ long ExplicitSolver::compute_weights(long begin, long end) {
   const double c = grid_.cell();
   // One axis at a time, straight into the arrays, several particles per instruction
   // (weights_axis; the weights were a quarter of the step as a call per particle).
-  weights_axis_fn(P.x.data(), begin, end, grid_.x_min(), UgimpAxis(c, 0.5 * P.spacing_x),
+  const long n = static_cast<long>(P.size());
+  weights_axis_fn(P.x.data(), begin, end, n, grid_.x_min(), UgimpAxis(c, 0.5 * P.spacing_x),
                   i0_.data(), sx_.data(), dsx_.data(), n_links_x_.data());
-  weights_axis_fn(P.y.data(), begin, end, grid_.y_min(), UgimpAxis(c, 0.5 * P.spacing_y),
+  weights_axis_fn(P.y.data(), begin, end, n, grid_.y_min(), UgimpAxis(c, 0.5 * P.spacing_y),
                   j0_.data(), sy_.data(), dsy_.data(), n_links_y_.data());
   long off = -1;
   for (long p = begin; p < end; ++p)
@@ -641,9 +640,22 @@ long ExplicitSolver::update_particles(long begin, long end, double sums[3]) {
   material_.stress(e1, sig1);
   material_.stress(e2, sig2);
   material_.stress(e3, sig3);
-  const LaneUpdate u{P.vx.data(), P.vy.data(), P.x.data(), P.y.data(), P.mass.data(),
-                     P.volume.data(), P.F.data()->data(), P.strain.data()->data(),
-                     P.stress.data()->data(), g, n, dt_, beta_, sig1[0], sig1[1], sig2[1],
+  const LaneUpdate u{P.vx.data(),
+                     P.vy.data(),
+                     P.x.data(),
+                     P.y.data(),
+                     P.mass.data(),
+                     P.volume.data(),
+                     P.F.data()->data(),
+                     P.strain.data()->data(),
+                     P.stress.data()->data(),
+                     g,
+                     n,
+                     dt_,
+                     beta_,
+                     sig1[0],
+                     sig1[1],
+                     sig2[1],
                      sig3[2]};
   update_lanes_fn(u, begin, end);
   // Pass 3: the energy terms, summed in particle order.

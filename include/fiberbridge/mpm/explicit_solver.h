@@ -142,8 +142,12 @@ private:
   }
   template <int NA, int NB, class F>
   void links(long p, F& f) const {
-    const double *sx = &sx_[3 * p], *sy = &sy_[3 * p];
-    const double *dsx = &dsx_[3 * p], *dsy = &dsy_[3 * p];
+    // Weight k of particle p at [k n + p].
+    const long n = static_cast<long>(i0_.size());
+    const double sx[3] = {sx_[p], sx_[n + p], sx_[2 * n + p]};
+    const double sy[3] = {sy_[p], sy_[n + p], sy_[2 * n + p]};
+    const double dsx[3] = {dsx_[p], dsx_[n + p], dsx_[2 * n + p]};
+    const double dsy[3] = {dsy_[p], dsy_[n + p], dsy_[2 * n + p]};
     const int i0 = i0_[p], j0 = j0_[p], ny = grid_.ny(), own = own_side_[p];
     const int rows[3] = {row_side_[j0], row_side_[j0 + 1], row_side_[j0 + 2]};
     for (int a = 0; a < NA; ++a) {
@@ -165,15 +169,16 @@ private:
   std::vector<VelocityConstraint> constraints_;
   std::vector<ParticleForce> particle_forces_;
   // Shape weights at the current positions, structure of arrays: per particle the lowest node
-  // column and row it touches and three uGIMP weights and derivatives per axis; the 3 x 3 link
+  // column and row it touches and three uGIMP weights and derivatives per axis (node by node,
+  // so that the weight kernel stores whole vectors); the 3 x 3 link
   // weights are their products, formed where they are used. Computed at the end of each step,
   // right after the particle moved, for the next one.
   std::vector<int> i0_, j0_;
-  std::vector<double> sx_, dsx_, sy_, dsy_; ///< 3 per particle
+  std::vector<double> sx_, dsx_, sy_, dsy_; ///< 3 per particle: weight k of particle p at [k n + p]
   /// Per particle 3, or 2 when the third node's weight and derivative along that axis are zero.
   std::vector<unsigned char> n_links_x_, n_links_y_;
   bool weights_current_ = false;
-  long off_grid_ = -1;                      ///< a particle whose weights leave the grid, or -1
+  long off_grid_ = -1; ///< a particle whose weights leave the grid, or -1
   /// Per particle, structure of arrays (11 n): what the links gave (PIC velocity, FLIP
   /// increment, velocity gradient) and the energy terms, between the passes of update_particles.
   std::vector<double> gathered_;
