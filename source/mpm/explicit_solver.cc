@@ -7,11 +7,310 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 #include <functional>
 #include <sstream>
 #include <utility>
 
 namespace fiberbridge::mpm {
+
+namespace {
+
+// Two doubles in one SSE2 register (GCC/Clang vector extension; plain pairs of scalars where
+// the target has no such register). Every lane does the scalar code's arithmetic in the
+// scalar code's order (no reassociation, no fused multiply-add on the baseline x86-64 target),
+// so the results are the scalar ones to the bit.
+typedef double v2d __attribute__((vector_size(16)));
+typedef long long v2i __attribute__((vector_size(16)));
+
+inline v2d load2(const double* p) {
+  v2d v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+inline void store2(double* p, v2d v) {
+  std::memcpy(p, &v, sizeof v);
+}
+// NodeField as pairs of doubles: (mass, unused), (px, py), (mux, muy), (fx, fy), (vx, vy),
+// (vx_new, vy_new).
+static_assert(sizeof(NodeField) == 12 * sizeof(double) && alignof(NodeField) == 16,
+              "NodeField: six pairs of doubles");
+static_assert(offsetof(NodeField, px) == 2 * sizeof(double) &&
+                  offsetof(NodeField, mux) == 4 * sizeof(double) &&
+                  offsetof(NodeField, fx) == 6 * sizeof(double) &&
+                  offsetof(NodeField, vx) == 8 * sizeof(double) &&
+                  offsetof(NodeField, vx_new) == 10 * sizeof(double),
+              "NodeField: the pairs the scatter and gather move together");
+
+#define FB_INLINE inline __attribute__((always_inline))
+
+/// uGIMP weights and derivatives (detail::ugimp) of W particles at once (VD: W doubles, VI: W
+/// 64-bit integers), lane by lane with the same arithmetic.
+template <class VD, class VI>
+FB_INLINE VD pick(VI m, VD x, VD y) {
+  return reinterpret_cast<VD>((m & reinterpret_cast<VI>(x)) | (~m & reinterpret_cast<VI>(y)));
+}
+
+template <class VD, class VI>
+FB_INLINE void ugimp_lanes(VD r, const UgimpAxis& A, VD& S, VD& dS) {
+  const VD zero = VD{}, one = zero + 1.0, minus_one = zero - 1.0;
+  const VI sign_bit = VI{} + static_cast<long long>(1ULL << 63);
+  const VD a = reinterpret_cast<VD>(reinterpret_cast<VI>(r) & ~sign_bit); // fabs
+  const VD sign = pick<VD, VI>(reinterpret_cast<VI>(r < zero), minus_one, one);
+  const VD S_in = 1 - (r * r + A.lp * A.lp) * A.inv_2clp, dS_in = -r * A.inv_clp;
+  const VD S_mid = 1 - a * A.inv_cell, dS_mid = -sign * A.inv_cell;
+  const VD d = A.cell + A.lp - a;
+  const VD S_out = d * d * A.inv_4clp, dS_out = -sign * d * A.inv_2clp;
+  const VI in = reinterpret_cast<VI>(a < A.lp), mid = reinterpret_cast<VI>(a <= A.cell - A.lp),
+           out = reinterpret_cast<VI>(a < A.cell + A.lp);
+  S = pick<VD, VI>(in, S_in, pick<VD, VI>(mid, S_mid, pick<VD, VI>(out, S_out, zero)));
+  dS = pick<VD, VI>(in, dS_in, pick<VD, VI>(mid, dS_mid, pick<VD, VI>(out, dS_out, zero)));
+}
+
+/// The uGIMP weights of particles [begin, end) along one axis (positions pos, node origin): the
+/// lowest node, 3 weights and derivatives per particle, and the number of links (2 when the
+/// third node's weight and derivative are zero). W particles at a time, the rest one by one
+/// with detail::ugimp: the same arithmetic either way, the same weights to the bit.
+template <class VD, class VI>
+FB_INLINE void weights_axis(const double* pos, long begin, long end, long n, double origin,
+                            const UgimpAxis& A, int* first, double* S, double* dS,
+                            unsigned char* n_links) {
+  constexpr int W = sizeof(VD) / sizeof(double);
+  long p = begin;
+  for (; p + W <= end; p += W) {
+    VD x;
+    std::memcpy(&x, pos + p, sizeof x);
+    // floor() of the box's left edge in cells (true division, see ugimp_weights), as a
+    // truncation corrected for negative values (a true comparison is -1).
+    const VD q = (x - A.lp - origin) / A.cell;
+    const VI t = __builtin_convertvector(q, VI);
+    const VI f = t + reinterpret_cast<VI>(q < __builtin_convertvector(t, VD));
+    const VD fd = __builtin_convertvector(f, VD);
+    for (int l = 0; l < W; ++l)
+      first[p + l] = static_cast<int>(f[l]);
+    VD Sk, dSk;
+    for (int k = 0; k < 3; ++k) {
+      ugimp_lanes<VD, VI>(x - (origin + (fd + k) * A.cell), A, Sk, dSk);
+      std::memcpy(S + k * n + p, &Sk, sizeof Sk);
+      std::memcpy(dS + k * n + p, &dSk, sizeof dSk);
+    }
+    // Without a branch: the pattern follows the particles' positions in their cells.
+    const VI third = reinterpret_cast<VI>(Sk != 0.0) | reinterpret_cast<VI>(dSk != 0.0);
+    for (int l = 0; l < W; ++l)
+      n_links[p + l] = static_cast<unsigned char>(2 - third[l]);
+  }
+  for (; p < end; ++p) {
+    const double q = (pos[p] - A.lp - origin) / A.cell;
+    const int t = static_cast<int>(q);
+    const int f = t - (q < static_cast<double>(t));
+    first[p] = f;
+    detail::ugimp(pos[p] - (origin + f * A.cell), A, S[p], dS[p]);
+    detail::ugimp(pos[p] - (origin + (f + 1) * A.cell), A, S[n + p], dS[n + p]);
+    detail::ugimp(pos[p] - (origin + (f + 2) * A.cell), A, S[2 * n + p], dS[2 * n + p]);
+    n_links[p] = static_cast<unsigned char>(2 + ((S[2 * n + p] != 0) | (dS[2 * n + p] != 0)));
+  }
+}
+
+using WeightsAxisFn = void (*)(const double*, long, long, long, double, const UgimpAxis&, int*,
+                               double*, double*, unsigned char*);
+
+// The same kernel for 2 lanes (SSE2, any x86-64), and, chosen at run time where the processor
+// has them, 4 (AVX2) and 8 (AVX-512) lanes. Only the lane count differs: no fused multiply-add
+// (the targets below do not enable FMA), so the weights are the same to the bit on any of them.
+void weights_axis_2(const double* pos, long begin, long end, long n, double origin,
+                    const UgimpAxis& A, int* first, double* S, double* dS, unsigned char* n_links) {
+  weights_axis<v2d, v2i>(pos, begin, end, n, origin, A, first, S, dS, n_links);
+}
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+typedef double v4d __attribute__((vector_size(32)));
+typedef long long v4i __attribute__((vector_size(32)));
+typedef double v8d __attribute__((vector_size(64)));
+typedef long long v8i __attribute__((vector_size(64)));
+__attribute__((target("avx2"))) void weights_axis_4(const double* pos, long begin, long end, long n,
+                                                    double origin, const UgimpAxis& A, int* first,
+                                                    double* S, double* dS, unsigned char* n_links) {
+  weights_axis<v4d, v4i>(pos, begin, end, n, origin, A, first, S, dS, n_links);
+}
+__attribute__((target("avx512f,avx512dq"))) void
+weights_axis_8(const double* pos, long begin, long end, long n, double origin, const UgimpAxis& A,
+               int* first, double* S, double* dS, unsigned char* n_links) {
+  weights_axis<v8d, v8i>(pos, begin, end, n, origin, A, first, S, dS, n_links);
+}
+WeightsAxisFn pick_weights_axis() {
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq"))
+    return weights_axis_8;
+  if (__builtin_cpu_supports("avx2"))
+    return weights_axis_4;
+  return weights_axis_2;
+}
+#else
+WeightsAxisFn pick_weights_axis() {
+  return weights_axis_2;
+}
+#endif
+const WeightsAxisFn weights_axis_fn = pick_weights_axis();
+
+/// What update_lanes reads and writes (particle arrays, the gathered link sums and energy
+/// terms, structure of arrays with stride n, and the constants of the step).
+struct LaneUpdate {
+  double *vx, *vy, *x, *y;
+  const double *mass, *volume;
+  double *F, *strain, *stress; ///< 4, 3, 3 per particle
+  double* g;                   ///< ExplicitSolver::gathered_
+  long n;
+  double dt, beta, q11, q12, q22, q66x2; ///< q66x2: 2 Q66
+};
+
+typedef double v1d __attribute__((vector_size(8)));
+
+template <class V>
+FB_INLINE V lanes_load(const double* a) {
+  V v;
+  std::memcpy(&v, a, sizeof v);
+  return v;
+}
+template <class V>
+FB_INLINE void lanes_store(double* a, V v) {
+  std::memcpy(a, &v, sizeof v);
+}
+template <class V>
+FB_INLINE V lanes_load(const double* a, int stride) {
+  V v;
+  for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l)
+    v[l] = a[stride * l];
+  return v;
+}
+template <class V>
+FB_INLINE void lanes_store(double* a, int stride, V v) {
+  for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l)
+    a[stride * l] = v[l];
+}
+/// Square root lane by lane (correctly rounded, like std::sqrt).
+template <class V>
+FB_INLINE V lanes_sqrt(V v) {
+  for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l)
+    v[l] = std::sqrt(v[l]);
+  return v;
+}
+
+/// The particle update of ExplicitSolver::update_particles after the gather, for the particles
+/// p .. p + W - 1 (V: W doubles): every lane does the scalar arithmetic in the scalar order (each
+/// expression below is the scalar code's), so the results are the same to the bit. The energy
+/// terms go to g (8 n: damping loss, 9 n: FLIP gain, 10 n: strain-energy increment) for the
+/// caller to sum in particle order.
+template <class V, class Sqrt>
+FB_INLINE void update_lanes(const LaneUpdate& u, long p, Sqrt vsqrt) {
+  const long n = u.n;
+  double* g = u.g;
+  const double dt = u.dt, beta = u.beta, one_minus_beta = 1 - u.beta;
+  const V vpic_x = lanes_load<V>(g + p), vpic_y = lanes_load<V>(g + n + p);
+  const V dvx = lanes_load<V>(g + 2 * n + p), dvy = lanes_load<V>(g + 3 * n + p);
+  const V L11 = lanes_load<V>(g + 4 * n + p), L12 = lanes_load<V>(g + 5 * n + p);
+  const V L21 = lanes_load<V>(g + 6 * n + p), L22 = lanes_load<V>(g + 7 * n + p);
+  const V m = lanes_load<V>(u.mass + p);
+  // Velocity: PIC damping blends the FLIP update (energy conserving, keeps the noise that crack
+  // growth releases) with the PIC velocity (dissipative); the kinetic energy removed is the
+  // damping loss.
+  const V fx = lanes_load<V>(u.vx + p) + dvx, fy = lanes_load<V>(u.vy + p) + dvy;
+  const V bx = one_minus_beta * fx + beta * vpic_x;
+  const V by = one_minus_beta * fy + beta * vpic_y;
+  lanes_store<V>(g + 8 * n + p, 0.5 * m * (fx * fx + fy * fy - bx * bx - by * by));
+  lanes_store<V>(g + 9 * n + p, 0.5 * m * (dvx * dvx + dvy * dvy));
+  lanes_store<V>(u.vx + p, bx);
+  lanes_store<V>(u.vy + p, by);
+  // Update-stress-last: position, deformation gradient and stress from the new grid velocities.
+  lanes_store<V>(u.x + p, lanes_load<V>(u.x + p) + vpic_x * dt);
+  lanes_store<V>(u.y + p, lanes_load<V>(u.y + p) + vpic_y * dt);
+  // F <- (I + L dt) F, then the corotational small-strain update: F = R U, strain U - I in the
+  // material frame (which turns with the arm), Cauchy stress R S R^T.
+  double* Fp = u.F + 4 * p;
+  const V F0 = lanes_load<V>(Fp, 4), F1 = lanes_load<V>(Fp + 1, 4);
+  const V F2 = lanes_load<V>(Fp + 2, 4), F3 = lanes_load<V>(Fp + 3, 4);
+  const V a11 = 1 + L11 * dt, a12 = L12 * dt, a21 = L21 * dt, a22 = 1 + L22 * dt;
+  const V F11 = a11 * F0 + a12 * F2, F12 = a11 * F1 + a12 * F3;
+  const V F21 = a21 * F0 + a22 * F2, F22 = a21 * F1 + a22 * F3;
+  lanes_store<V>(Fp, 4, F11);
+  lanes_store<V>(Fp + 1, 4, F12);
+  lanes_store<V>(Fp + 2, 4, F21);
+  lanes_store<V>(Fp + 3, 4, F22);
+  // Polar rotation angle th with tan th = (F21 - F12)/(F11 + F22), as cosine and sine directly
+  // (no trigonometric calls; F11 + F22 stays near 2, so the plain square root needs none of
+  // hypot's overflow care).
+  const V rn = 1 / vsqrt((F11 + F22) * (F11 + F22) + (F21 - F12) * (F21 - F12));
+  const V c = (F11 + F22) * rn, s = (F21 - F12) * rn;
+  const V U11 = c * F11 + s * F21, U22 = -s * F12 + c * F22;
+  const V U12 = c * F12 + s * F22, U21 = -s * F11 + c * F21;
+  const V eps0 = U11 - 1, eps1 = U22 - 1, eps2 = 0.5 * (U12 + U21);
+  // OrthotropicElastic::stress of the strain, and energy_density of its increment.
+  const V S0 = u.q11 * eps0 + u.q12 * eps1, S1 = u.q12 * eps0 + u.q22 * eps1;
+  const V S2 = u.q66x2 * eps2;
+  double* ep = u.strain + 3 * p;
+  const V de0 = eps0 - lanes_load<V>(ep, 3), de1 = eps1 - lanes_load<V>(ep + 1, 3);
+  const V de2 = eps2 - lanes_load<V>(ep + 2, 3);
+  const V t0 = u.q11 * de0 + u.q12 * de1, t1 = u.q12 * de0 + u.q22 * de1, t2 = u.q66x2 * de2;
+  lanes_store<V>(g + 10 * n + p,
+                 0.5 * (t0 * de0 + t1 * de1 + 2 * t2 * de2) * lanes_load<V>(u.volume + p));
+  lanes_store<V>(ep, 3, eps0);
+  lanes_store<V>(ep + 1, 3, eps1);
+  lanes_store<V>(ep + 2, 3, eps2);
+  double* sp = u.stress + 3 * p;
+  lanes_store<V>(sp, 3, c * c * S0 - 2 * c * s * S2 + s * s * S1);
+  lanes_store<V>(sp + 1, 3, s * s * S0 + 2 * c * s * S2 + c * c * S1);
+  lanes_store<V>(sp + 2, 3, c * s * (S0 - S1) + (c * c - s * s) * S2);
+}
+
+template <class VD, class Sqrt>
+FB_INLINE void update_all_lanes(const LaneUpdate& u, long begin, long end, Sqrt vsqrt) {
+  constexpr int W = sizeof(VD) / sizeof(double);
+  long p = begin;
+  for (; p + W <= end; p += W)
+    update_lanes<VD>(u, p, vsqrt);
+  for (; p < end; ++p)
+    update_lanes<v1d>(u, p, [](v1d v) { return lanes_sqrt(v); });
+}
+
+using UpdateLanesFn = void (*)(const LaneUpdate&, long, long);
+
+void update_lanes_2(const LaneUpdate& u, long begin, long end) {
+#if defined(__SSE2__)
+  update_all_lanes<v2d>(u, begin, end, [](v2d v) -> v2d { return _mm_sqrt_pd(v); });
+#else
+  update_all_lanes<v2d>(u, begin, end, [](v2d v) { return lanes_sqrt(v); });
+#endif
+}
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target("avx2"))) void update_lanes_4(const LaneUpdate& u, long begin, long end) {
+  update_all_lanes<v4d>(
+      u, begin, end, [](v4d v) __attribute__((target("avx2")))->v4d { return _mm256_sqrt_pd(v); });
+}
+__attribute__((target("avx512f,avx512dq"))) void update_lanes_8(const LaneUpdate& u, long begin,
+                                                                long end) {
+  update_all_lanes<v8d>(
+      u, begin, end, [](v8d v) __attribute__((target("avx512f")))->v8d {
+        return _mm512_mask_sqrt_pd(v, static_cast<__mmask8>(-1), v);
+      });
+}
+UpdateLanesFn pick_update_lanes() {
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq"))
+    return update_lanes_8;
+  if (__builtin_cpu_supports("avx2"))
+    return update_lanes_4;
+  return update_lanes_2;
+}
+#else
+UpdateLanesFn pick_update_lanes() {
+  return update_lanes_2;
+}
+#endif
+const UpdateLanesFn update_lanes_fn = pick_update_lanes();
+
+} // namespace
 
 ExplicitSolver::ExplicitSolver(Grid grid, Particles particles, const OrthotropicElastic& material,
                                double dt, double pic_fraction, double thickness)
@@ -26,6 +325,9 @@ ExplicitSolver::ExplicitSolver(Grid grid, Particles particles, const Orthotropic
   const std::size_t n = particles_.size();
   i0_.resize(n);
   j0_.resize(n);
+  n_links_x_.resize(n);
+  n_links_y_.resize(n);
+  gathered_.resize(11 * n);
   for (auto* w : {&sx_, &dsx_, &sy_, &dsy_})
     w->resize(3 * n);
   own_side_.resize(n);
@@ -117,25 +419,13 @@ void ExplicitSolver::step() {
 long ExplicitSolver::compute_weights(long begin, long end) {
   const Particles& P = particles_;
   const double c = grid_.cell();
-  // One axis at a time, straight into the arrays (the weights were a quarter of the step as a
-  // call per particle; GCC 12 still does not vectorize this loop: "control flow in loop"). The
-  // same arithmetic as ugimp_weights: the same weights to the bit.
-  auto axis = [&](const double* pos, double origin, double lp, int* first, double* S, double* dS) {
-    const UgimpAxis A(c, lp);
-    for (long p = begin; p < end; ++p) {
-      // floor() of the box's left edge in cells (true division, see ugimp_weights), as a
-      // truncation corrected for negative values (no libm call).
-      const double q = (pos[p] - A.lp - origin) / A.cell;
-      const int t = static_cast<int>(q);
-      const int f = t - (q < static_cast<double>(t));
-      first[p] = f;
-      detail::ugimp(pos[p] - (origin + f * A.cell), A, S[3 * p], dS[3 * p]);
-      detail::ugimp(pos[p] - (origin + (f + 1) * A.cell), A, S[3 * p + 1], dS[3 * p + 1]);
-      detail::ugimp(pos[p] - (origin + (f + 2) * A.cell), A, S[3 * p + 2], dS[3 * p + 2]);
-    }
-  };
-  axis(P.x.data(), grid_.x_min(), 0.5 * P.spacing_x, i0_.data(), sx_.data(), dsx_.data());
-  axis(P.y.data(), grid_.y_min(), 0.5 * P.spacing_y, j0_.data(), sy_.data(), dsy_.data());
+  // One axis at a time, straight into the arrays, several particles per instruction
+  // (weights_axis; the weights were a quarter of the step as a call per particle).
+  const long n = static_cast<long>(P.size());
+  weights_axis_fn(P.x.data(), begin, end, n, grid_.x_min(), UgimpAxis(c, 0.5 * P.spacing_x),
+                  i0_.data(), sx_.data(), dsx_.data(), n_links_x_.data());
+  weights_axis_fn(P.y.data(), begin, end, n, grid_.y_min(), UgimpAxis(c, 0.5 * P.spacing_y),
+                  j0_.data(), sy_.data(), dsy_.data(), n_links_y_.data());
   long off = -1;
   for (long p = begin; p < end; ++p)
     if (i0_[p] < 0 || j0_[p] < 0 || i0_[p] + 2 >= grid_.nx() || j0_[p] + 2 >= grid_.ny())
@@ -216,17 +506,17 @@ void ExplicitSolver::scatter(long begin, long end) {
     const double V = P.volume[p] * (P.F[p][0] * P.F[p][3] - P.F[p][1] * P.F[p][2]);
     const auto& sig = P.stress[p];
     const double ux = P.x[p] - P.X[p], uy = P.y[p] - P.Y[p];
-    const double mvx = m * P.vx[p], mvy = m * P.vy[p];
-    // A link of zero weight and gradient adds zeros: no test needed (the sums are unchanged).
+    // What a link adds, in the pairs of NodeField: (mass, unused) m S, momentum m v S,
+    // mass-weighted displacement m u S, and the force -V sigma grad S.
+    const v2d m0 = {m, 0.0}, mv = {m * P.vx[p], m * P.vy[p]}, mu = {m * ux, m * uy};
+    const v2d sig_x = {sig[0], sig[2]}, sig_y = {sig[2], sig[1]};
+    // for_links leaves out the links of zero weight and gradient (which would add exact zeros).
     for_links(p, [&](int k, double S, double gx, double gy) {
-      NodeField& f = fields[k];
-      f.mass += m * S;
-      f.px += mvx * S;
-      f.py += mvy * S;
-      f.mux += m * ux * S;
-      f.muy += m * uy * S;
-      f.fx -= V * (sig[0] * gx + sig[2] * gy);
-      f.fy -= V * (sig[2] * gx + sig[1] * gy);
+      double* f = reinterpret_cast<double*>(fields + k);
+      store2(f, load2(f) + m0 * S);
+      store2(f + 2, load2(f + 2) + mv * S);
+      store2(f + 4, load2(f + 4) + mu * S);
+      store2(f + 6, load2(f + 6) - V * (sig_x * gx + sig_y * gy));
     });
   }
 }
@@ -320,60 +610,60 @@ void ExplicitSolver::grid_to_particles() {
 long ExplicitSolver::update_particles(long begin, long end, double sums[3]) {
   Particles& P = particles_;
   const NodeField* fields = grid_.fields().data();
+  const long n = static_cast<long>(P.size());
+  double* g = gathered_.data();
+  // Pass 1, particle by particle: what the links give.
+  for (long p = begin; p < end; ++p) {
+    // Pairs: PIC velocity, FLIP increment, and the velocity gradient's columns (L11, L21) and
+    // (L12, L22), each summed over the links in link order.
+    v2d vpic = {0.0, 0.0}, dv = vpic, Lx = vpic, Ly = vpic;
+    for_links(p, [&](int k, double S, double gx, double gy) {
+      const double* f = reinterpret_cast<const double*>(fields + k);
+      const v2d v = load2(f + 10), v_old = load2(f + 8); // (vx_new, vy_new), (vx, vy)
+      vpic += S * v;
+      dv += S * (v - v_old);
+      Lx += v * gx;
+      Ly += v * gy;
+    });
+    g[p] = vpic[0];
+    g[n + p] = vpic[1];
+    g[2 * n + p] = dv[0];
+    g[3 * n + p] = dv[1];
+    g[4 * n + p] = Lx[0]; // L11
+    g[5 * n + p] = Ly[0]; // L12
+    g[6 * n + p] = Lx[1]; // L21
+    g[7 * n + p] = Ly[1]; // L22
+  }
+  // Pass 2, several particles per instruction: velocity, position, deformation and stress.
+  double sig1[3], sig2[3], sig3[3];
+  const double e1[3] = {1, 0, 0}, e2[3] = {0, 1, 0}, e3[3] = {0, 0, 1};
+  material_.stress(e1, sig1);
+  material_.stress(e2, sig2);
+  material_.stress(e3, sig3);
+  const LaneUpdate u{P.vx.data(),
+                     P.vy.data(),
+                     P.x.data(),
+                     P.y.data(),
+                     P.mass.data(),
+                     P.volume.data(),
+                     P.F.data()->data(),
+                     P.strain.data()->data(),
+                     P.stress.data()->data(),
+                     g,
+                     n,
+                     dt_,
+                     beta_,
+                     sig1[0],
+                     sig1[1],
+                     sig2[1],
+                     sig3[2]};
+  update_lanes_fn(u, begin, end);
+  // Pass 3: the energy terms, summed in particle order.
   double loss = 0, flip_gain = 0, stiff_gain = 0;
   for (long p = begin; p < end; ++p) {
-    double vpic_x = 0, vpic_y = 0, dvx = 0, dvy = 0;
-    double L11 = 0, L12 = 0, L21 = 0, L22 = 0;
-    for_links(p, [&](int k, double S, double gx, double gy) {
-      const NodeField& f = fields[k];
-      vpic_x += S * f.vx_new;
-      vpic_y += S * f.vy_new;
-      dvx += S * (f.vx_new - f.vx);
-      dvy += S * (f.vy_new - f.vy);
-      L11 += f.vx_new * gx;
-      L12 += f.vx_new * gy;
-      L21 += f.vy_new * gx;
-      L22 += f.vy_new * gy;
-    });
-    // Velocity: PIC damping blends the FLIP update (energy conserving, keeps the noise that
-    // crack growth releases) with the PIC velocity (dissipative); the kinetic energy removed is
-    // the damping loss.
-    const double fx = P.vx[p] + dvx, fy = P.vy[p] + dvy;
-    const double bx = (1 - beta_) * fx + beta_ * vpic_x;
-    const double by = (1 - beta_) * fy + beta_ * vpic_y;
-    loss += 0.5 * P.mass[p] * (fx * fx + fy * fy - bx * bx - by * by);
-    flip_gain += 0.5 * P.mass[p] * (dvx * dvx + dvy * dvy);
-    P.vx[p] = bx;
-    P.vy[p] = by;
-
-    // Update-stress-last: position, deformation gradient and stress from the new grid
-    // velocities.
-    P.x[p] += vpic_x * dt_;
-    P.y[p] += vpic_y * dt_;
-    // F <- (I + L dt) F, then the corotational small-strain update: F = R U, strain U - I in the
-    // material frame (which turns with the arm), Cauchy stress R S R^T.
-    auto& F = P.F[p];
-    const double a11 = 1 + L11 * dt_, a12 = L12 * dt_, a21 = L21 * dt_, a22 = 1 + L22 * dt_;
-    const double F11 = a11 * F[0] + a12 * F[2], F12 = a11 * F[1] + a12 * F[3];
-    const double F21 = a21 * F[0] + a22 * F[2], F22 = a21 * F[1] + a22 * F[3];
-    F = {F11, F12, F21, F22};
-    // Polar rotation angle th with tan th = (F21 - F12)/(F11 + F22), as cosine and sine
-    // directly (no trigonometric calls in the hot loop; F11 + F22 stays near 2, so the plain
-    // square root needs none of hypot's overflow care).
-    const double rn = 1 / std::sqrt((F11 + F22) * (F11 + F22) + (F21 - F12) * (F21 - F12));
-    const double c = (F11 + F22) * rn, s = (F21 - F12) * rn;
-    const double U11 = c * F11 + s * F21, U22 = -s * F12 + c * F22;
-    const double U12 = c * F12 + s * F22, U21 = -s * F11 + c * F21;
-    double eps[3] = {U11 - 1, U22 - 1, 0.5 * (U12 + U21)};
-    double S[3];
-    material_.stress(eps, S);
-    const double de[3] = {eps[0] - P.strain[p][0], eps[1] - P.strain[p][1],
-                          eps[2] - P.strain[p][2]};
-    stiff_gain += material_.energy_density(de) * P.volume[p];
-    P.strain[p] = {eps[0], eps[1], eps[2]};
-    P.stress[p] = {c * c * S[0] - 2 * c * s * S[2] + s * s * S[1],
-                   s * s * S[0] + 2 * c * s * S[2] + c * c * S[1],
-                   c * s * (S[0] - S[1]) + (c * c - s * s) * S[2]};
+    loss += g[8 * n + p];
+    flip_gain += g[9 * n + p];
+    stiff_gain += g[10 * n + p];
   }
   sums[0] += loss;
   sums[1] += flip_gain;

@@ -115,21 +115,45 @@ private:
   /// sums (damping loss, FLIP kinetic-energy gain, strain energy of the increments) and returns
   /// a particle that left the grid, or -1.
   long update_particles(long begin, long end, double sums[3]);
-  /// Calls f(field index, S, dS/dx, dS/dy) for the 3 x 3 links of particle p, a (x) outer.
+  /// Calls f(field index, S, dS/dx, dS/dy) for the links of particle p, a (x) outer: the 3 x 3
+  /// nodes around it, less the third column (row) where the particle's x (y) weight and its
+  /// derivative are both zero, so that the link adds exact zeros (n_links_x_, n_links_y_; a
+  /// particle of the undeformed lattice has 2 x 2 links: its box ends on a node line).
   /// The field index of node (i0 + a, j0 + b) is 2 (i ny + j) + side: on a node column the crack
   /// splits, the side of the particle's own material; elsewhere the side of the node's row. The
   /// column and row lookups are made once per particle, not once per link (this is the hot loop
   /// of scatter and grid-to-particles, issue 16).
   template <class F>
   void for_links(long p, F&& f) const {
-    const double *sx = &sx_[3 * p], *sy = &sy_[3 * p];
-    const double *dsx = &dsx_[3 * p], *dsy = &dsy_[3 * p];
+    // The trip counts as constants (fully unrolled loops), one branch per particle.
+    switch (2 * n_links_x_[p] + n_links_y_[p]) {
+    case 6:
+      links<2, 2>(p, f);
+      break;
+    case 7:
+      links<2, 3>(p, f);
+      break;
+    case 8:
+      links<3, 2>(p, f);
+      break;
+    default:
+      links<3, 3>(p, f);
+    }
+  }
+  template <int NA, int NB, class F>
+  void links(long p, F& f) const {
+    // Weight k of particle p at [k n + p].
+    const long n = static_cast<long>(i0_.size());
+    const double sx[3] = {sx_[p], sx_[n + p], sx_[2 * n + p]};
+    const double sy[3] = {sy_[p], sy_[n + p], sy_[2 * n + p]};
+    const double dsx[3] = {dsx_[p], dsx_[n + p], dsx_[2 * n + p]};
+    const double dsy[3] = {dsy_[p], dsy_[n + p], dsy_[2 * n + p]};
     const int i0 = i0_[p], j0 = j0_[p], ny = grid_.ny(), own = own_side_[p];
     const int rows[3] = {row_side_[j0], row_side_[j0 + 1], row_side_[j0 + 2]};
-    for (int a = 0; a < 3; ++a) {
+    for (int a = 0; a < NA; ++a) {
       const int base = 2 * ((i0 + a) * ny + j0);
       const bool split = split_column_[i0 + a];
-      for (int b = 0; b < 3; ++b)
+      for (int b = 0; b < NB; ++b)
         f(base + 2 * b + (split ? own : rows[b]), sx[a] * sy[b], dsx[a] * sy[b], sx[a] * dsy[b]);
     }
   }
@@ -145,13 +169,19 @@ private:
   std::vector<VelocityConstraint> constraints_;
   std::vector<ParticleForce> particle_forces_;
   // Shape weights at the current positions, structure of arrays: per particle the lowest node
-  // column and row it touches and three uGIMP weights and derivatives per axis; the 3 x 3 link
+  // column and row it touches and three uGIMP weights and derivatives per axis (node by node,
+  // so that the weight kernel stores whole vectors); the 3 x 3 link
   // weights are their products, formed where they are used. Computed at the end of each step,
   // right after the particle moved, for the next one.
   std::vector<int> i0_, j0_;
-  std::vector<double> sx_, dsx_, sy_, dsy_; ///< 3 per particle
+  std::vector<double> sx_, dsx_, sy_, dsy_; ///< 3 per particle: weight k of particle p at [k n + p]
+  /// Per particle 3, or 2 when the third node's weight and derivative along that axis are zero.
+  std::vector<unsigned char> n_links_x_, n_links_y_;
   bool weights_current_ = false;
-  long off_grid_ = -1;                      ///< a particle whose weights leave the grid, or -1
+  long off_grid_ = -1; ///< a particle whose weights leave the grid, or -1
+  /// Per particle, structure of arrays (11 n): what the links gave (PIC velocity, FLIP
+  /// increment, velocity gradient) and the energy terms, between the passes of update_particles.
+  std::vector<double> gathered_;
   std::vector<unsigned char> own_side_;     ///< side of the crack plane of each particle
   std::vector<unsigned char> row_side_;     ///< side of each node row
   std::vector<unsigned char> split_column_; ///< node columns on the crack (this step)

@@ -10,9 +10,13 @@ namespace fiberbridge::mpm {
 
 enum Side : int { below = 0, above = 1 };
 
-/// What one velocity field of one node accumulates during a step.
-struct NodeField {
+/// What one velocity field of one node accumulates during a step. The members come in x, y pairs
+/// on 16-byte boundaries (mass with an unused partner), so that the scatter and the gather of
+/// the explicit solver move a pair with one two-lane operation (the same arithmetic per lane:
+/// the same sums to the bit).
+struct alignas(16) NodeField {
   double mass = 0;
+  double unused = 0;             ///< mass's partner in its pair (the scatter adds zeros to it)
   double px = 0, py = 0;         ///< momentum
   double mux = 0, muy = 0;       ///< mass-weighted displacement (for the contact test)
   double fx = 0, fy = 0;         ///< internal + external + crack-traction force
