@@ -4,14 +4,14 @@
 #include "fiberbridge/core/format.h"
 #include "fiberbridge/core/output_guard.h"
 #include "fiberbridge/core/units.h"
-#include "fiberbridge/law/numerical_fault.h"
 #include "fiberbridge/law/rigid_law.h"
-#include "fiberbridge/law/steady_state.h"
 #include "fiberbridge/mpm/checkpoint.h"
 #include "fiberbridge/mpm/crack.h"
 #include "fiberbridge/mpm/explicit_solver.h"
 #include "fiberbridge/mpm/j_integral.h"
 #include "fiberbridge/mpm/vtu_writer.h"
+#include "fiberbridge/result/numerical_fault.h"
+#include "fiberbridge/result/steady_state.h"
 
 #include <algorithm>
 #include <chrono>
@@ -22,7 +22,7 @@
 
 namespace fiberbridge::mpm {
 
-double arm_vibration_period(const law::Specimen& s, const law::Material& m, double a) {
+double arm_vibration_period(const specimen::Specimen& s, const specimen::Material& m, double a) {
   const double h = s.arm_thickness();
   const double I = s.width * h * h * h / 12;
   return 1.787 * a * a * std::sqrt(m.density * s.width * h / (m.E_L * I));
@@ -34,8 +34,8 @@ using units::mm;
 
 } // namespace
 
-void check_dcb_inputs(const law::Specimen& s, const law::Material& m, const MpmParameters& p,
-                      const law::TractionLaw* law) {
+void check_dcb_inputs(const specimen::Specimen& s, const specimen::Material& m,
+                      const MpmParameters& p, const law::TractionLaw* law) {
   p.validate();
   s.validate();
   m.validate();
@@ -56,8 +56,9 @@ void check_dcb_inputs(const law::Specimen& s, const law::Material& m, const MpmP
   (void)law;
 }
 
-DcbModel::DcbModel(const law::Specimen& s, const law::Material& m, const law::TractionLaw& law,
-                   double j_tip, const MpmParameters& p, const std::string& output_dir,
+DcbModel::DcbModel(const specimen::Specimen& s, const specimen::Material& m,
+                   const law::TractionLaw& law, double j_tip, const MpmParameters& p,
+                   const std::string& output_dir,
                    const std::function<void(const std::string&)>& progress)
     : spec_(s), mat_(m), user_law_(law), j_tip_(j_tip), prm_(p), out_dir_(output_dir),
       progress_(progress), elastic_(m) {
@@ -113,8 +114,8 @@ void DcbModel::setup_body() {
   // Room for the arms to swing open: twice the LEFM opening with the whole steady-state
   // toughness at the last crack length (a bridged DCB opens less than that at the same tip).
   const double G_ss = j_tip_ + law_->area();
-  const double P_end = law::cbt_load_at_crack_length(spec_, mat_, G_ss, end_tip_);
-  opening_allowance_ = 2 * law::cbt_opening(spec_, mat_, P_end, end_tip_);
+  const double P_end = specimen::cbt_load_at_crack_length(spec_, mat_, G_ss, end_tip_);
+  opening_allowance_ = 2 * specimen::cbt_opening(spec_, mat_, P_end, end_tip_);
   // The crack plane y = 0 lies in mid-cell, so no node sits on it.
   const int k = static_cast<int>(std::ceil((h + 0.5 * opening_allowance_) / c)) + 3;
   const int nx = static_cast<int>(std::ceil(L / c)) + 5;
@@ -158,8 +159,8 @@ void DcbModel::setup_body() {
 void DcbModel::setup_loading() {
   const double a0 = spec_.initial_crack;
   t_vib0_ = arm_vibration_period(spec_, mat_, a0);
-  const double P0 = law::cbt_load_at_crack_length(spec_, mat_, j_tip_, a0);
-  opening0_ = law::cbt_opening(spec_, mat_, P0, a0);
+  const double P0 = specimen::cbt_load_at_crack_length(spec_, mat_, j_tip_, a0);
+  opening0_ = specimen::cbt_opening(spec_, mat_, P0, a0);
   rate_ = opening0_ / (prm_.loading_periods * t_vib0_);
   ramp_time_ = prm_.ramp_periods * t_vib0_;
   // A ramp of a few arm periods or less excites the arms: say so instead of calling it static.
@@ -206,7 +207,7 @@ void DcbModel::advance_tip(double j_measured) {
     crack.advance(x, ux, uy);
   }
 
-  law::RCurvePoint pt;
+  result::RCurvePoint pt;
   pt.a = x_new;
   pt.J_tip = j_measured;
   pt.time = s.time();
@@ -236,7 +237,7 @@ void DcbModel::advance_tip(double j_measured) {
   // the unbalanced stress of the cut acts on light node fields at the newly split column) and
   // the PIC damping. Both count as dissipated, beside the zone's share of the law.
   pt.dissipated = crack.zone_dissipated(B) + s.damping_loss() + s.numerical_loss();
-  law::check_rcurve_point(pt); // NaN/Inf ends the run naming the column
+  result::check_rcurve_point(pt); // NaN/Inf ends the run naming the column
   rcurve_.push_back(pt);
   if (pt.strain_energy > 0)
     max_kinetic_ratio_ = std::max(max_kinetic_ratio_, pt.kinetic_energy / pt.strain_energy);
@@ -318,7 +319,7 @@ double DcbModel::far_field_j() const {
   const double x_left = 0.5 * spec_.initial_crack;
   const double x_right = 0.5 * (crack_->tip() + (prm_.tip_j_cells + 2) * cell_ + spec_.length);
   if (!(x_left - 0.5 * w > 1.5 * cell_ && x_right + 0.5 * w < spec_.length))
-    return law::not_available;
+    return result::not_available;
   return far_field_j_integral(*solver_, x_left, x_right, w);
 }
 
@@ -329,7 +330,7 @@ const Crack& DcbModel::crack() const {
   return *crack_;
 }
 
-law::SimulationResult DcbModel::run() {
+result::SimulationResult DcbModel::run() {
   session_start_ = std::chrono::steady_clock::now();
   running_ = true;
   // Checkpoints (mpm/checkpoint.h): continue from one when asked to; a fresh run removes a
@@ -357,7 +358,7 @@ law::SimulationResult DcbModel::run() {
   if (vtu_ && (rcurve_.empty() || rcurve_.size() % prm_.vtu_every_advances != 0))
     vtu_->write(s);
 
-  law::SimulationResult r;
+  result::SimulationResult r;
   r.model = "mpm";
   r.rcurve = rcurve_;
   r.n_dofs_or_particles = static_cast<long>(s.particles().size());
@@ -384,7 +385,7 @@ law::SimulationResult DcbModel::run() {
   return r;
 }
 
-void DcbModel::finish(law::SimulationResult& r) const {
+void DcbModel::finish(result::SimulationResult& r) const {
   r.method.push_back(
       "2D explicit MPM, update-stress-last, uGIMP, corotational orthotropic elasticity (plane " +
       std::string(mat_.plane_stress ? "stress" : "strain") +
@@ -418,7 +419,7 @@ void DcbModel::finish(law::SimulationResult& r) const {
                      "after each row (the per-advance increments ring with the arm)");
   const auto lagging_advances =
       std::count_if(rcurve_.begin(), rcurve_.end(),
-                    [&](const law::RCurvePoint& p) { return growth_->lagged(p.J_tip); });
+                    [&](const result::RCurvePoint& p) { return growth_->lagged(p.J_tip); });
   if (growth_->shortened_windows() > 0 || lagging_advances > 0)
     r.notes.push_back(
         "growth not fully quasi-static: at " + std::to_string(growth_->shortened_windows()) +
@@ -470,7 +471,7 @@ void DcbModel::finish(law::SimulationResult& r) const {
   // shared stencil): the per-advance increments of W and U ring with the arm, the central
   // difference averages that out.
   auto& rc = r.rcurve;
-  law::fill_r_energy(rc, spec_.width);
+  result::fill_r_energy(rc, spec_.width);
 
   // Steady state: the shared rule, evaluated on the whole run. The root position is known to a
   // fraction of a cell (crack particles every half cell), so it has moved once it passes a0 by a
@@ -479,7 +480,7 @@ void DcbModel::finish(law::SimulationResult& r) const {
   // but not in the plateau. (The PVA ladder lagged at the last 1-3 advances of the 4, 3.33 and
   // 2.5 mm runs, near the end ligament, where the beam-theory time per step that cuts the window
   // came out too long; leaving them out moved G_ss by +0.1, 0.0 and -0.8 %.)
-  law::SteadyStateRule rule;
+  result::SteadyStateRule rule;
   rule.window = prm_.steady_state_window;
   rule.tolerance = prm_.plateau_tolerance;
   rule.root_move = 0.25 * cell_;
@@ -487,16 +488,17 @@ void DcbModel::finish(law::SimulationResult& r) const {
   for (std::size_t i = 0; i < rc.size(); ++i)
     lagged[i] = growth_->lagged(rc[i].J_tip);
   const auto steady =
-      law::find_steady_state(rc, a0_, spec_.width, law_->critical_opening() > 0, rule, lagged);
-  law::report_steady_state(r, steady, rule, "MPM");
-  r.rdelta_rel_error_vs_eq2 = law::rdelta_error_vs_eq2(r, user_law_, j_tip_);
+      result::find_steady_state(rc, a0_, spec_.width, law_->critical_opening() > 0, rule, lagged);
+  result::report_steady_state(r, steady, rule, "MPM");
+  r.rdelta_rel_error_vs_eq2 = result::rdelta_error_vs_eq2(r, user_law_, j_tip_);
 }
 
-law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
-                                   const law::TractionLaw& law, double j_tip,
-                                   const MpmParameters& params, const std::string& output_dir,
-                                   const std::function<void(const std::string&)>& progress) {
-  law::begin_fault_context("mpm");
+result::SimulationResult simulate_dcb(const specimen::Specimen& specimen,
+                                      const specimen::Material& material,
+                                      const law::TractionLaw& law, double j_tip,
+                                      const MpmParameters& params, const std::string& output_dir,
+                                      const std::function<void(const std::string&)>& progress) {
+  fiberbridge::begin_fault_context("mpm");
   DcbModel model(specimen, material, law, j_tip, params, output_dir, progress);
   return model.run();
 }
