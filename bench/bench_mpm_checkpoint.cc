@@ -15,8 +15,8 @@ using namespace fiberbridge;
 namespace {
 
 struct Setup {
-  law::Specimen specimen;
-  law::Material material;
+  specimen::Specimen specimen;
+  specimen::Material material;
   law::PiecewiseLinearLaw law = law::make_trilinear({0.1e-3, 661e3, 1.0e-3, 187e3, 6e-3});
   mpm::MpmParameters params;
   std::string dir;

@@ -21,13 +21,13 @@ constexpr double B = 25 * mm, h = 2.7 * mm, E = 30e9;
 
 /// A linear-elastic DCB (C = 8 a^3 / (E B h^3)) whose crack grows from 35 to 100 mm against an
 /// R curve rising from 300 to 900 J/m^2: rows at every 0.05 mm of growth.
-law::SimulationResult elastic_dcb() {
-  law::SimulationResult r;
+result::SimulationResult elastic_dcb() {
+  result::SimulationResult r;
   r.model = "closed-form beam";
   for (double a = 35 * mm; a <= 100 * mm; a += 0.05 * mm) {
     const double G = 300 + 600 * (1 - std::exp(-(a - 35 * mm) / (15 * mm)));
     const double C = 8 * a * a * a / (E * B * h * h * h), dC = 24 * a * a / (E * B * h * h * h);
-    law::RCurvePoint q;
+    result::RCurvePoint q;
     q.a = a;
     q.load = std::sqrt(2 * B * G / dC);
     q.load_point_opening = C * q.load;

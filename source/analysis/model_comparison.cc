@@ -14,7 +14,7 @@ namespace {
 /// Piecewise-linear interpolation of y(x) on increasing x; NaN outside.
 double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
   if (x.empty() || at < x.front() || at > x.back())
-    return law::not_available;
+    return result::not_available;
   const auto it = std::lower_bound(x.begin(), x.end(), at);
   const std::size_t i = static_cast<std::size_t>(it - x.begin());
   if (i == 0)
@@ -24,7 +24,7 @@ double interpolate(const std::vector<double>& x, const std::vector<double>& y, d
 }
 
 /// Tip position where the notch root first moves (end of the developing part); +inf if never.
-double end_of_development(const law::SimulationResult& r) {
+double end_of_development(const result::SimulationResult& r) {
   if (r.rcurve.empty())
     return 0;
   const double root0 = r.rcurve.front().root;
@@ -34,7 +34,7 @@ double end_of_development(const law::SimulationResult& r) {
   return std::numeric_limits<double>::infinity();
 }
 
-double peak_load(const law::SimulationResult& r) {
+double peak_load(const result::SimulationResult& r) {
   double m = 0;
   for (const auto& p : r.rcurve)
     if (std::isfinite(p.load))
@@ -42,7 +42,7 @@ double peak_load(const law::SimulationResult& r) {
   return m;
 }
 
-double field(const law::RCurvePoint& p, const std::string& q) {
+double field(const result::RCurvePoint& p, const std::string& q) {
   if (q == "R_energy")
     return p.R_energy;
   if (q == "R_J")
@@ -54,8 +54,8 @@ double field(const law::RCurvePoint& p, const std::string& q) {
 
 } // namespace
 
-std::vector<PairwiseDifference> compare_models(const law::SimulationResult& a,
-                                               const law::SimulationResult& b) {
+std::vector<PairwiseDifference> compare_models(const result::SimulationResult& a,
+                                               const result::SimulationResult& b) {
   std::vector<PairwiseDifference> out;
   const double a_end = std::min(end_of_development(a), end_of_development(b));
   // R(a) curves depend on the specimen model (where each model puts the effective crack tip);
@@ -63,7 +63,7 @@ std::vector<PairwiseDifference> compare_models(const law::SimulationResult& a,
   for (const std::string q : {"R_energy", "R_J", "R_eq2", "delta_root", "R_J(delta_root)"}) {
     const bool vs_delta = q == "R_J(delta_root)";
     const std::string y_field = vs_delta ? "R_J" : q;
-    const auto x_of = [&](const law::RCurvePoint& p) { return vs_delta ? p.delta_root : p.a; };
+    const auto x_of = [&](const result::RCurvePoint& p) { return vs_delta ? p.delta_root : p.a; };
     // b's curve as a function of x (rows with increasing x, finite values).
     std::vector<double> xb, yb;
     for (const auto& p : b.rcurve) {
@@ -92,17 +92,17 @@ std::vector<PairwiseDifference> compare_models(const law::SimulationResult& a,
     d.model_b = b.model;
     d.quantity = q;
     d.n_points = n;
-    d.rel_l2_developing = den > 0 ? std::sqrt(num / den) : law::not_available;
+    d.rel_l2_developing = den > 0 ? std::sqrt(num / den) : result::not_available;
     d.plateau_rel_diff = (b.G_ss - a.G_ss) / a.G_ss;
     const double pa = peak_load(a), pb = peak_load(b);
-    d.peak_load_rel_diff = pa > 0 ? (pb - pa) / pa : law::not_available;
+    d.peak_load_rel_diff = pa > 0 ? (pb - pa) / pa : result::not_available;
     out.push_back(d);
   }
   return out;
 }
 
-std::vector<ClosedLoopRow> closed_loop(const law::SimulationResult& r, const law::TractionLaw& law,
-                                       double j_tip, int n, int k) {
+std::vector<ClosedLoopRow> closed_loop(const result::SimulationResult& r,
+                                       const law::TractionLaw& law, double j_tip, int n, int k) {
   const double dc = law.critical_opening();
   if (!(dc > 0))
     throw ComputationError("closed loop: the law has no bridging (delta_c = 0): nothing to "

@@ -22,7 +22,7 @@ double clipped_normal(std::mt19937& rng, double sigma) {
 
 } // namespace
 
-TestRecord make_synthetic_record(const law::SimulationResult& result,
+TestRecord make_synthetic_record(const result::SimulationResult& result,
                                  const SyntheticRecordOptions& o, const std::string& name) {
   const auto& rows = result.rcurve;
   if (rows.size() < 2)
@@ -110,7 +110,7 @@ void write_test_record_csv(const std::string& path, const TestRecord& r,
   w.close();
 }
 
-std::vector<std::string> describe_synthetic_record(const law::SimulationResult& result,
+std::vector<std::string> describe_synthetic_record(const result::SimulationResult& result,
                                                    const SyntheticRecordOptions& o) {
   std::ostringstream s;
   s << "Synthetic DCB record sampled from a " << result.model << " simulation ("

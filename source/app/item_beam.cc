@@ -100,7 +100,7 @@ void check_beam_item(SceneContext& ctx) {
 void run_beam_item(SceneContext& ctx) {
   const beam::BeamParameters params = parse_section<BeamSection>(*ctx.prm, "Beam");
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
-  law::SimulationResult result =
+  result::SimulationResult result =
       beam::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params, progress);
   report_simulation(ctx, std::move(result), "n_elements");
 }

@@ -68,7 +68,7 @@ void run_compare_item(SceneContext& ctx) {
     check_identified_against_simulations(ctx);
 #endif
 
-  std::vector<const law::SimulationResult*> models;
+  std::vector<const result::SimulationResult*> models;
   for (const auto& [name, r] : ctx.results)
     models.push_back(&r);
   Json pairs = Json::array();

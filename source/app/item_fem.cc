@@ -42,7 +42,7 @@ void run_fem_item(SceneContext& ctx) {
   std::function<void(const std::string&)> progress;
   if (rank0)
     progress = [](const std::string& line) { std::cerr << line << '\n'; };
-  law::SimulationResult result;
+  result::SimulationResult result;
   fem::DistributedRunInfo info;
   if (distributed)
     result = fem::simulate_dcb_distributed(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(),

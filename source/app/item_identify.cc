@@ -263,8 +263,8 @@ identify::IdentifyJobRunner jobs_across_ranks(Json* log, const std::string& fit)
 std::vector<identify::Identification>
 run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
                     const std::vector<std::vector<analysis::TestRecord>>& of,
-                    const identify::IdentifySettings& settings, const law::Specimen& specimen,
-                    const law::Material& quoted, const Fingerprint& inputs, Json& tasks) {
+                    const identify::IdentifySettings& settings, const specimen::Specimen& specimen,
+                    const specimen::Material& quoted, const Fingerprint& inputs, Json& tasks) {
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
   std::vector<std::optional<identify::Identification>> fits(units.size());
   std::vector<std::size_t> todo;
@@ -336,8 +336,8 @@ void run_identify_item(SceneContext& ctx) {
   const bool per_record = ctx.prm->get_bool("Per record");
   ctx.prm->leave_subsection();
   const auto records = read_scene_records(ctx);
-  const law::Specimen specimen = ctx.specimen();
-  const law::Material quoted = ctx.material();
+  const specimen::Specimen specimen = ctx.specimen();
+  const specimen::Material quoted = ctx.material();
   // Each fit is a unit of work that --resume restores once finished (identify_resume.h).
   const Fingerprint inputs = identify_inputs(ctx, records);
   std::vector<std::string> units = {"identify_joint"};
@@ -377,9 +377,9 @@ void run_identify_item(SceneContext& ctx) {
   // Later simulations get the identified law, J_tip and the first record's specimen.
   ctx.fitted_law = std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(id->law));
   ctx.fitted_j_tip = id->j_tip;
-  law::Specimen s = specimen;
+  specimen::Specimen s = specimen;
   s.initial_crack = id->records.front().initial_crack;
-  law::Material m = quoted;
+  specimen::Material m = quoted;
   m.E_L = id->records.front().E_L;
   ctx.identified_specimen = s;
   ctx.identified_material = m;
@@ -399,7 +399,7 @@ void check_identified_against_simulations(SceneContext& ctx) {
                      title_of(rec.name) + " measured'";
   for (const auto& [name, result] : ctx.results) {
     std::vector<double> load, a;
-    law::SimulationResult mapped = result; // geometrically linear models, mapped as in identify
+    result::SimulationResult mapped = result; // geometrically linear models, mapped as in identify
     if (large)
       identify::with_large_displacements(mapped, ctx.specimen().arm_thickness());
     identify::model_at_openings(mapped, rec.opening, load, a);

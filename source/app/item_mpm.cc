@@ -125,8 +125,8 @@ void run_mpm_item(SceneContext& ctx) {
   mpm::MpmParameters params = parse_section<MpmSection>(*ctx.prm, "MPM");
   params.resume = ctx.resume;
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
-  law::SimulationResult result = mpm::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(),
-                                                   ctx.j_tip(), params, ctx.output_dir, progress);
+  result::SimulationResult result = mpm::simulate_dcb(
+      ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params, ctx.output_dir, progress);
   report_simulation(ctx, std::move(result), "n_particles");
 }
 

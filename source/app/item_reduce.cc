@@ -47,7 +47,7 @@ ReduceStepOptions parse_test_section(SceneContext& ctx) {
   auto& prm = *ctx.prm;
   ReduceStepOptions o;
   o.where = ctx.scene_file + ": Specimen";
-  const law::Specimen s = ctx.specimen();
+  const specimen::Specimen s = ctx.specimen();
   o.specimen.width = s.width;
   o.specimen.arm_thickness = s.arm_thickness();
   o.specimen.length = s.length;

@@ -107,8 +107,8 @@ std::string section_of(const std::string& model) {
 }
 
 /// Runs one simulation item in its own output folder with the scene's law and overrides.
-law::SimulationResult run_model(SceneContext& parent, const std::string& model,
-                                const std::string& dir, bool use_fitted_law) {
+result::SimulationResult run_model(SceneContext& parent, const std::string& model,
+                                   const std::string& dir, bool use_fitted_law) {
   const SceneItem* item = find_item(model);
   if (!item)
     throw InputError("Study: model '" + model + "' is not available in this build");
@@ -245,7 +245,7 @@ std::string level_setting(const Ladder& ladder, std::size_t l) {
 }
 
 /// One ladder level: the model with the level's keys, in study/<model>_level<l>.
-law::SimulationResult run_ladder_level(SceneContext& ctx, const Ladder& ladder, std::size_t l) {
+result::SimulationResult run_ladder_level(SceneContext& ctx, const Ladder& ladder, std::size_t l) {
   std::vector<std::string> sets;
   for (const auto& [k, v] : ladder.keys)
     sets.push_back(section_of(ladder.model) + "/" + k + "=" + v[l]);
@@ -456,7 +456,7 @@ void run_study_item(SceneContext& ctx) {
       struct Level {
         std::string setting;
         double key_value;
-        law::SimulationResult r;
+        result::SimulationResult r;
         double g_err, peak;
         int rank;
         double cpu_s;
@@ -477,16 +477,17 @@ void run_study_item(SceneContext& ctx) {
       // exact value, so its order comes from three successive levels (constant factor assumed).
       const auto factor = [&](std::size_t l) {
         const double a = run_levels[l].key_value, b = run_levels[l + 1].key_value;
-        return a > 0 && b > 0 ? std::max(a / b, b / a) : law::not_available;
+        return a > 0 && b > 0 ? std::max(a / b, b / a) : result::not_available;
       };
       const auto order = [&](double e0, double e1, double f) {
-        return e0 > 0 && e1 > 0 && f > 1 ? std::log(e0 / e1) / std::log(f) : law::not_available;
+        return e0 > 0 && e1 > 0 && f > 1 ? std::log(e0 / e1) / std::log(f) : result::not_available;
       };
       const double target = model == "mpm" ? mpm_target : target_error;
       int cheapest = -1;
       for (std::size_t l = 0; l < run_levels.size(); ++l) {
         const auto& L = run_levels[l];
-        double p_r = law::not_available, p_g = law::not_available, p_p = law::not_available;
+        double p_r = result::not_available, p_g = result::not_available,
+               p_p = result::not_available;
         if (l + 1 < run_levels.size()) {
           const auto& N = run_levels[l + 1];
           p_r = order(L.r.rdelta_rel_error_vs_eq2, N.r.rdelta_rel_error_vs_eq2, factor(l));

@@ -112,7 +112,7 @@ void declare_law_section(dealii::ParameterHandler& prm) {
 }
 
 void declare_specimen_sections(dealii::ParameterHandler& prm) {
-  const law::Specimen s;
+  const specimen::Specimen s;
   prm.enter_subsection("Specimen");
   prm.declare_entry("Length", std::to_string(s.length / mm), Double(0),
                     "Beam length along the grain, mm (seed 2.2: 300).");
@@ -122,7 +122,7 @@ void declare_specimen_sections(dealii::ParameterHandler& prm) {
   prm.declare_entry("Initial crack", std::to_string(s.initial_crack / mm), Double(0),
                     "Sawn pre-crack from the load line, mm (100).");
   prm.leave_subsection();
-  const law::Material m;
+  const specimen::Material m;
   prm.enter_subsection("Material");
   prm.declare_entry("E_L", std::to_string(m.E_L / units::MPa), Double(0),
                     "MPa; coast Douglas-fir 12 % MC, USDA Wood Handbook Ch. 5: 13400.");

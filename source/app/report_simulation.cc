@@ -6,12 +6,12 @@
 
 namespace fiberbridge::app {
 
-void report_simulation(SceneContext& ctx, law::SimulationResult r, const std::string& size_key) {
+void report_simulation(SceneContext& ctx, result::SimulationResult r, const std::string& size_key) {
   const auto law = ctx.law();
   const double j_tip = ctx.j_tip();
-  r.rdelta_rel_error_vs_eq2 = law::rdelta_error_vs_eq2(r, *law, j_tip);
+  r.rdelta_rel_error_vs_eq2 = result::rdelta_error_vs_eq2(r, *law, j_tip);
   const std::string csv = "rcurve_" + r.model + ".csv";
-  law::write_rcurve_csv(ctx.out(csv), r);
+  result::write_rcurve_csv(ctx.out(csv), r);
   const double G_ss_law = j_tip + law->area();
   Json block = {{"law", law->name()},
                 {"law_source", ctx.fitted_law ? "fit" : "Cohesive law section"},

@@ -7,7 +7,7 @@ namespace fiberbridge::app {
 
 namespace {
 
-using law::RCurvePoint;
+using result::RCurvePoint;
 
 /// Every column of an R-curve row, in declaration order (rcurve.h).
 constexpr double RCurvePoint::*point_fields[] = {
@@ -35,7 +35,7 @@ static_assert(sizeof(RCurvePoint) ==
 
 } // namespace
 
-Json result_to_json(const law::SimulationResult& r) {
+Json result_to_json(const result::SimulationResult& r) {
   Json rows = Json::array();
   for (const auto& p : r.rcurve) {
     Json row = Json::array();
@@ -54,8 +54,8 @@ Json result_to_json(const law::SimulationResult& r) {
           {"method", r.method}};
 }
 
-law::SimulationResult result_from_json(const Json& j) {
-  law::SimulationResult r;
+result::SimulationResult result_from_json(const Json& j) {
+  result::SimulationResult r;
   r.model = j.at("model").get<std::string>();
   for (const auto& row : j.at("rcurve")) {
     RCurvePoint p;

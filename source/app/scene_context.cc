@@ -59,10 +59,10 @@ double SceneContext::j_tip() {
   return section_j_tip_;
 }
 
-law::Specimen SceneContext::specimen() const {
+specimen::Specimen SceneContext::specimen() const {
   if (identified_specimen)
     return *identified_specimen;
-  law::Specimen s;
+  specimen::Specimen s;
   prm->enter_subsection("Specimen");
   s.length = prm->get_double("Length") * mm;
   s.width = prm->get_double("Width") * mm;
@@ -73,10 +73,10 @@ law::Specimen SceneContext::specimen() const {
   return s;
 }
 
-law::Material SceneContext::material() const {
+specimen::Material SceneContext::material() const {
   if (identified_material)
     return *identified_material;
-  law::Material m;
+  specimen::Material m;
   prm->enter_subsection("Material");
   m.E_L = prm->get_double("E_L") * MPa;
   m.E_T = prm->get_double("E_T") * MPa;

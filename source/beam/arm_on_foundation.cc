@@ -8,14 +8,14 @@
 
 namespace fiberbridge::beam {
 
-double arm_bending_modulus(const law::Material& m) {
+double arm_bending_modulus(const specimen::Material& m) {
   // A wide arm in plane strain cannot contract across its width: E_L/(1 - nu_LT nu_TL) is the
   // plane-strain modulus along the beam within the LT plane (the out-of-plane constants, which
   // the scene does not give, are taken as the LT ones).
   return m.plane_stress ? m.E_L : m.E_L / (1 - m.nu_LT * m.nu_TL());
 }
 
-ArmConstants arm_constants(const law::Specimen& s, const law::Material& m, double kappa,
+ArmConstants arm_constants(const specimen::Specimen& s, const specimen::Material& m, double kappa,
                            double foundation_modulus) {
   ArmConstants arm;
   arm.width = s.width;
@@ -73,11 +73,12 @@ double root_rotation_length(const ArmConstants& arm) {
   return arm.EI * std::abs(semi_infinite_end_flexibility(arm).t_M);
 }
 
-double calibrated_foundation_modulus(const law::Specimen& s, const law::Material& m, double kappa) {
+double calibrated_foundation_modulus(const specimen::Specimen& s, const specimen::Material& m,
+                                     double kappa) {
   s.validate();
   m.validate();
   const double h = s.arm_thickness();
-  const double target = law::cbt_chi(m) * h;
+  const double target = specimen::cbt_chi(m) * h;
   ArmConstants arm = arm_constants(s, m, kappa, 1.0);
   // A rigid foundation still lets the section rotate through shear: c -> sqrt(EI/S) as k -> inf.
   // The root rotation decreases monotonically with k, so CBT is reachable only above that.

@@ -6,9 +6,9 @@
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
-#include "fiberbridge/law/numerical_fault.h"
 #include "fiberbridge/law/rigid_law.h"
-#include "fiberbridge/law/steady_state.h"
+#include "fiberbridge/result/numerical_fault.h"
+#include "fiberbridge/result/steady_state.h"
 
 #include <algorithm>
 #include <array>
@@ -20,8 +20,8 @@
 
 namespace fiberbridge::beam {
 
-using law::RCurvePoint;
-using law::SimulationResult;
+using result::RCurvePoint;
+using result::SimulationResult;
 using units::mm;
 
 void BeamParameters::validate(const std::string& c) const {
@@ -49,7 +49,7 @@ void BeamParameters::validate(const std::string& c) const {
     throw InputError(c + ": max_advances must be >= 1");
 }
 
-void check_dcb_inputs(const law::Specimen& specimen, const law::Material& material,
+void check_dcb_inputs(const specimen::Specimen& specimen, const specimen::Material& material,
                       const BeamParameters& parameters) {
   specimen.validate();
   material.validate();
@@ -82,7 +82,7 @@ void timoshenko_stiffness(double EI, double S, double l, double K[4][4]) {
 /// The beam model of one arm and its solver. run() reads like the algorithm.
 class DcbBeamSolver {
 public:
-  DcbBeamSolver(const law::Specimen& specimen, const law::Material& material,
+  DcbBeamSolver(const specimen::Specimen& specimen, const specimen::Material& material,
                 const law::TractionLaw& law, double j_tip, const BeamParameters& parameters,
                 const std::function<void(const std::string&)>& progress);
   SimulationResult run();
@@ -126,8 +126,8 @@ private:
       progress_(s);
   }
 
-  law::Specimen specimen_;
-  law::Material material_;
+  specimen::Specimen specimen_;
+  specimen::Material material_;
   const law::TractionLaw* law_;
   double j_tip_;
   BeamParameters prm_;
@@ -148,7 +148,7 @@ private:
   double load_ = 0; // reaction at the load line [N]
 };
 
-DcbBeamSolver::DcbBeamSolver(const law::Specimen& specimen, const law::Material& material,
+DcbBeamSolver::DcbBeamSolver(const specimen::Specimen& specimen, const specimen::Material& material,
                              const law::TractionLaw& law, double j_tip,
                              const BeamParameters& parameters,
                              const std::function<void(const std::string&)>& progress)
@@ -560,12 +560,12 @@ SimulationResult DcbBeamSolver::run() {
   const std::size_t last_node = x_.size() - 1;
 
   double work = 0;
-  law::SteadyStateRule rule; // the shared rule (law::find_steady_state), Beam section's keys
+  result::SteadyStateRule rule; // the shared rule (result::find_steady_state), Beam section's keys
   rule.window = prm_.steady_state_window;
   rule.tolerance = prm_.plateau_tolerance;
   rule.root_move = 1e-12 * L;
   const bool bridging = dc > 0;
-  law::SteadyState steady;
+  result::SteadyState steady;
   std::size_t move_index = 0; // first state whose root has moved
   bool moved = false;
   std::string stop_reason;
@@ -602,7 +602,7 @@ SimulationResult DcbBeamSolver::run() {
       work += 0.5 * (p.load + q.load) * (p.load_point_opening - q.load_point_opening);
     }
     p.external_work = work;
-    law::check_rcurve_point(p); // NaN/Inf ends the run naming the column
+    result::check_rcurve_point(p); // NaN/Inf ends the run naming the column
     result.rcurve.push_back(p);
     // Small rotations: measure the load error against the elastica at the state of largest
     // opening per crack length (under a tenth the error is about 0.15 % or less,
@@ -631,7 +631,7 @@ SimulationResult DcbBeamSolver::run() {
           fmt(p.delta_root / mm) + " mm");
 
     if (!steady.reached) {
-      steady = law::find_steady_state(result.rcurve, a0, arm_.width, bridging, rule);
+      steady = result::find_steady_state(result.rcurve, a0, arm_.width, bridging, rule);
       if (steady.reached && !(prm_.final_crack_length > 0))
         break;
     }
@@ -677,10 +677,10 @@ SimulationResult DcbBeamSolver::run() {
       shortest_zone = std::min(shortest_zone, result.rcurve[k].zone_length);
   const double step_length = static_cast<double>(step) * h_e;
   if (!steady.reached)
-    steady = law::find_steady_state(result.rcurve, a0, arm_.width, bridging, rule);
+    steady = result::find_steady_state(result.rcurve, a0, arm_.width, bridging, rule);
   if (shortest_zone < 4 * step_length) {
     result.reached_steady_state = false;
-    result.G_ss = law::not_available;
+    result.G_ss = result::not_available;
     const double wanted =
         std::ceil(8 * h_e / std::max(shortest_zone, 0.01 * h_e) * prm_.n_elements);
     note(result, "unresolved bridging zone: after the root moved the zone is only " +
@@ -689,7 +689,7 @@ SimulationResult DcbBeamSolver::run() {
                      fmt(wanted, 2) + " elements or more and a tip advance of at most " +
                      fmt(shortest_zone / 8 / mm, 2) + " mm (Beam section).");
   } else {
-    law::report_steady_state(result, steady, rule, "Beam");
+    result::report_steady_state(result, steady, rule, "Beam");
   }
   if (!steady.reached && shortest_zone >= 4 * step_length) {
     const auto& last = result.rcurve.back();
@@ -713,11 +713,11 @@ SimulationResult DcbBeamSolver::run() {
 
 void DcbBeamSolver::finish(SimulationResult& result) {
   auto& rc = result.rcurve;
-  law::fill_r_energy(rc, arm_.width); // d(W - U_rec)/(B da), the shared stencil
+  result::fill_r_energy(rc, arm_.width); // d(W - U_rec)/(B da), the shared stencil
   // Unstable growth under displacement control: the states where the load-point opening is
   // below an earlier one would be passed in one jump of a displacement-controlled test.
   std::size_t unstable = 0;
-  double max_opening = 0, first_a = law::not_available, last_a = law::not_available;
+  double max_opening = 0, first_a = result::not_available, last_a = result::not_available;
   for (const auto& p : rc) {
     if (p.load_point_opening < max_opening) {
       if (unstable++ == 0)
@@ -740,7 +740,7 @@ void DcbBeamSolver::finish(SimulationResult& result) {
       (prm_.foundation_modulus > 0
            ? std::string("given")
            : "calibrated to CBT root rotation chi h = " +
-                 fmt(law::cbt_chi(material_) * specimen_.arm_thickness() / mm) + " mm") +
+                 fmt(specimen::cbt_chi(material_) * specimen_.arm_thickness() / mm) + " mm") +
       "; 2 E_T/h = " + fmt(2 * material_.E_T / specimen_.arm_thickness() * 1e-9) +
       " GPa/m); the law acts on the opening beyond delta_0 = sqrt(2 J_tip/k) = " +
       fmt(delta_0_ / mm) + " mm");
@@ -761,7 +761,7 @@ void DcbBeamSolver::finish(SimulationResult& result) {
         "are those of the small-rotation state");
   if (!material_.plane_stress)
     note(result, "plane strain: the arms bend with E_L/(1 - nu_LT nu_TL)");
-  result.rdelta_rel_error_vs_eq2 = law::rdelta_error_vs_eq2(result, *law_, j_tip_);
+  result.rdelta_rel_error_vs_eq2 = result::rdelta_error_vs_eq2(result, *law_, j_tip_);
   say("beam: " + std::to_string(rc.size()) + " states in " + fmt(result.wall_time_s) + " s" +
       (result.reached_steady_state ? ", G_ss = " + fmt(result.G_ss) + " J/m^2"
                                    : ", no steady state"));
@@ -769,11 +769,12 @@ void DcbBeamSolver::finish(SimulationResult& result) {
 
 } // namespace
 
-law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
-                                   const law::TractionLaw& law, double j_tip,
-                                   const BeamParameters& parameters,
-                                   const std::function<void(const std::string&)>& progress) {
-  law::begin_fault_context("beam");
+result::SimulationResult simulate_dcb(const specimen::Specimen& specimen,
+                                      const specimen::Material& material,
+                                      const law::TractionLaw& law, double j_tip,
+                                      const BeamParameters& parameters,
+                                      const std::function<void(const std::string&)>& progress) {
+  fiberbridge::begin_fault_context("beam");
   DcbBeamSolver solver(specimen, material, law, j_tip, parameters, progress);
   return solver.run();
 }

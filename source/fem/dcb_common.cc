@@ -22,10 +22,10 @@ std::string fmt(double v, int precision) {
 }
 
 template <>
-SymmetricTensor<4, 2> orthotropic_stiffness<2>(const law::Material& m,
+SymmetricTensor<4, 2> orthotropic_stiffness<2>(const specimen::Material& m,
                                                const FemParameters& /* 3D shear moduli only */) {
   constexpr int dim = 2;
-  const auto [q11, q22, q12] = law::in_plane_stiffness(m);
+  const auto [q11, q22, q12] = specimen::in_plane_stiffness(m);
   SymmetricTensor<4, dim> C;
   C[0][0][0][0] = q11;
   C[1][1][1][1] = q22;
@@ -36,7 +36,8 @@ SymmetricTensor<4, 2> orthotropic_stiffness<2>(const law::Material& m,
 }
 
 template <>
-SymmetricTensor<4, 3> orthotropic_stiffness<3>(const law::Material& m, const FemParameters& p) {
+SymmetricTensor<4, 3> orthotropic_stiffness<3>(const specimen::Material& m,
+                                               const FemParameters& p) {
   // Normal compliance in the material axes (L, T, R) = (x, y, z), the same constants and
   // conventions as the plane-strain reduction above (s23 = -nu_RT / E_R), so a thin 3D plate
   // (sigma_zz = 0) is the 2D plane-stress model and a fully restrained one the plane-strain one.
@@ -68,7 +69,7 @@ SymmetricTensor<4, 3> orthotropic_stiffness<3>(const law::Material& m, const Fem
 }
 
 const law::TractionLaw* insertable_law(const law::TractionLaw& law,
-                                       const law::Material& /* no elastic rise */,
+                                       const specimen::Material& /* no elastic rise */,
                                        const FemParameters& /* no elastic rise */,
                                        std::unique_ptr<law::ElasticRiseLaw>& /* stays empty */,
                                        std::vector<std::string>& notes) {
@@ -81,7 +82,7 @@ const law::TractionLaw* insertable_law(const law::TractionLaw& law,
   return &law;
 }
 
-DcbMeshLines dcb_mesh_lines(const law::Specimen& specimen, const FemParameters& p) {
+DcbMeshLines dcb_mesh_lines(const specimen::Specimen& specimen, const FemParameters& p) {
   const double L = specimen.length, a0 = specimen.initial_crack;
   const double h = specimen.arm_thickness();
   DcbMeshLines m;
@@ -130,13 +131,13 @@ DcbMeshLines dcb_mesh_lines(const law::Specimen& specimen, const FemParameters& 
   return m;
 }
 
-double q1_bending_indicator(const law::Material& material, double element_length,
+double q1_bending_indicator(const specimen::Material& material, double element_length,
                             double arm_thickness) {
   const double r = element_length / arm_thickness;
   return material.G_LT / material.E_L * r * r;
 }
 
-unsigned resolve_degree(const law::Specimen& specimen, const law::Material& material,
+unsigned resolve_degree(const specimen::Specimen& specimen, const specimen::Material& material,
                         const FemParameters& p, std::vector<std::string>& notes) {
   const double h = specimen.arm_thickness();
   const double indicator = q1_bending_indicator(material, p.element_size, h);
@@ -163,7 +164,7 @@ unsigned resolve_degree(const law::Specimen& specimen, const law::Material& mate
   return p.degree;
 }
 
-double note_small_strain_bound(law::SimulationResult& result) {
+double note_small_strain_bound(result::SimulationResult& result) {
   double worst = 0, worst_a = 0;
   for (const auto& pt : result.rcurve)
     if (pt.a > 0 && pt.load_point_opening / pt.a > worst) {
@@ -183,7 +184,7 @@ double note_small_strain_bound(law::SimulationResult& result) {
   return worst;
 }
 
-double note_zone_resolution(law::SimulationResult& result, double element_length) {
+double note_zone_resolution(result::SimulationResult& result, double element_length) {
   double zone = 0, zone_a = 0;
   for (const auto& pt : result.rcurve)
     if (std::isfinite(pt.zone_length) && pt.zone_length > zone) {
@@ -205,8 +206,9 @@ double note_zone_resolution(law::SimulationResult& result, double element_length
   return elements;
 }
 
-law::SteadyStateRule steady_state_rule(const FemParameters& p, const law::Specimen& specimen) {
-  law::SteadyStateRule rule;
+result::SteadyStateRule steady_state_rule(const FemParameters& p,
+                                          const specimen::Specimen& specimen) {
+  result::SteadyStateRule rule;
   rule.window = p.steady_state_window;
   rule.tolerance = p.plateau_tolerance;
   rule.root_move = 1e-9 * specimen.length;

@@ -5,30 +5,30 @@
 #include "fiberbridge/fem/distributed_dcb.h"
 
 #include "fiberbridge/core/error.h"
-#include "fiberbridge/law/numerical_fault.h"
+#include "fiberbridge/result/numerical_fault.h"
 
 namespace fiberbridge::fem {
 
 namespace distributed {
 template <int dim>
-law::SimulationResult run_distributed(const law::Specimen&, const law::Material&,
-                                      const law::TractionLaw&, double, const FemParameters&,
-                                      const std::string&,
-                                      const std::function<void(const std::string&)>&, MPI_Comm,
-                                      DistributedRunInfo&, FemRunDetails&);
+result::SimulationResult run_distributed(const specimen::Specimen&, const specimen::Material&,
+                                         const law::TractionLaw&, double, const FemParameters&,
+                                         const std::string&,
+                                         const std::function<void(const std::string&)>&, MPI_Comm,
+                                         DistributedRunInfo&, FemRunDetails&);
 } // namespace distributed
 
 bool use_distributed_engine(const FemParameters&, unsigned) {
   return true;
 }
 
-law::SimulationResult
-simulate_dcb_distributed(const law::Specimen& specimen, const law::Material& material,
+result::SimulationResult
+simulate_dcb_distributed(const specimen::Specimen& specimen, const specimen::Material& material,
                          const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
                          const std::string& output_dir,
                          const std::function<void(const std::string&)>& progress, MPI_Comm comm,
                          DistributedRunInfo* info, FemRunDetails* details) {
-  law::begin_fault_context("fem");
+  fiberbridge::begin_fault_context("fem");
   DistributedRunInfo local_info;
   FemRunDetails local_details;
   DistributedRunInfo& i = info ? *info : local_info;
@@ -42,19 +42,21 @@ simulate_dcb_distributed(const law::Specimen& specimen, const law::Material& mat
   throw InputError("FEM/Dimension: must be 2 or 3");
 }
 
-law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
-                                   const law::TractionLaw& law, double j_tip,
-                                   const FemParameters& parameters, const std::string& output_dir,
-                                   const std::function<void(const std::string&)>& progress) {
+result::SimulationResult simulate_dcb(const specimen::Specimen& specimen,
+                                      const specimen::Material& material,
+                                      const law::TractionLaw& law, double j_tip,
+                                      const FemParameters& parameters,
+                                      const std::string& output_dir,
+                                      const std::function<void(const std::string&)>& progress) {
   return simulate_dcb_distributed(specimen, material, law, j_tip, parameters, output_dir, progress,
                                   MPI_COMM_SELF);
 }
 
-law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
-                                   const law::TractionLaw& law, double j_tip,
-                                   const FemParameters& parameters, const std::string& output_dir,
-                                   const std::function<void(const std::string&)>& progress,
-                                   FemRunDetails& details) {
+result::SimulationResult
+simulate_dcb(const specimen::Specimen& specimen, const specimen::Material& material,
+             const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
+             const std::string& output_dir, const std::function<void(const std::string&)>& progress,
+             FemRunDetails& details) {
   return simulate_dcb_distributed(specimen, material, law, j_tip, parameters, output_dir, progress,
                                   MPI_COMM_SELF, nullptr, &details);
 }

@@ -46,8 +46,8 @@
 #include "fiberbridge/fem/cohesive_interface.h"
 #include "fiberbridge/fem/dcb_common.h"
 #include "fiberbridge/fem/distributed_dcb.h"
-#include "fiberbridge/law/numerical_fault.h"
-#include "fiberbridge/law/steady_state.h"
+#include "fiberbridge/result/numerical_fault.h"
+#include "fiberbridge/result/steady_state.h"
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/index_set.h>
@@ -102,11 +102,11 @@ using Vec = TrilinosWrappers::MPI::Vector;
 template <int dim>
 class DistributedDcbModel {
 public:
-  DistributedDcbModel(const law::Specimen& specimen, const law::Material& material,
+  DistributedDcbModel(const specimen::Specimen& specimen, const specimen::Material& material,
                       const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
                       const std::string& output_dir,
                       const std::function<void(const std::string&)>& progress, MPI_Comm comm);
-  law::SimulationResult run();
+  result::SimulationResult run();
   const DistributedRunInfo& info() const { return info_; }
   const FemRunDetails& details() const { return details_; }
 
@@ -161,8 +161,8 @@ private:
   double bulk_energy() const; ///< per width [J/m]
   double stored_energy() const;
   double load_per_width();
-  law::RCurvePoint record_advance();
-  /// The shared rule (law::find_steady_state); reports and returns true once reached.
+  result::RCurvePoint record_advance();
+  /// The shared rule (result::find_steady_state); reports and returns true once reached.
   bool reached_steady_state(bool final_state);
   void output_fields(unsigned advance);
   void write_interface_csv() const;
@@ -172,8 +172,8 @@ private:
   }
   unsigned node_index(unsigned ix, unsigned iz) const { return ix * n_z_ + iz; }
 
-  const law::Specimen specimen_;
-  const law::Material material_;
+  const specimen::Specimen specimen_;
+  const specimen::Material material_;
   const law::TractionLaw& user_law_;
   std::unique_ptr<law::ElasticRiseLaw> regularized_law_;
   const law::TractionLaw* law_ = nullptr;
@@ -254,11 +254,11 @@ private:
   double work_ = 0; ///< external work per width [J/m]
   std::vector<std::pair<double, double>> path_;
 
-  law::SimulationResult result_;
+  result::SimulationResult result_;
   DistributedRunInfo info_;
   double max_opening_behind_tip_ = 0;
-  double tip_dissipated_ = 0;                   ///< energy released by the releases [J/m]
-  double j_after_release_ = law::not_available; ///< tip J right after the last release
+  double tip_dissipated_ = 0;                      ///< energy released by the releases [J/m]
+  double j_after_release_ = result::not_available; ///< tip J right after the last release
   FemRunDetails details_;
   unsigned n_trials_ = 0, n_unstable_ = 0;
   std::vector<std::pair<double, std::string>> pvd_records_;
@@ -268,9 +268,10 @@ private:
 
 template <int dim>
 DistributedDcbModel<dim>::DistributedDcbModel(
-    const law::Specimen& specimen, const law::Material& material, const law::TractionLaw& law,
-    double j_tip, const FemParameters& parameters, const std::string& output_dir,
-    const std::function<void(const std::string&)>& progress, MPI_Comm comm)
+    const specimen::Specimen& specimen, const specimen::Material& material,
+    const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
+    const std::string& output_dir, const std::function<void(const std::string&)>& progress,
+    MPI_Comm comm)
     : specimen_(specimen), material_(material), user_law_(law), j_tip_(j_tip), prm_(parameters),
       output_dir_(output_dir), progress_(progress), comm_(comm),
       rank_(Utilities::MPI::this_mpi_process(comm)),
@@ -1310,9 +1311,9 @@ bool DistributedDcbModel<dim>::load_to_critical() {
   else if (J > 0)
     next = opening_ * target / lo.root_j;
   else
-    next = law::cbt_opening(
+    next = specimen::cbt_opening(
         specimen_, material_,
-        law::cbt_load_at_crack_length(specimen_, material_, j_tip_, specimen_.initial_crack),
+        specimen::cbt_load_at_crack_length(specimen_, material_, j_tip_, specimen_.initial_crack),
         specimen_.initial_crack);
   for (int it = 0; it < 40; ++it) {
     if (have_hi && !(next > lo.opening && next < hi.opening))
@@ -1492,10 +1493,10 @@ double DistributedDcbModel<dim>::load_per_width() {
 }
 
 template <int dim>
-law::RCurvePoint DistributedDcbModel<dim>::record_advance() {
+result::RCurvePoint DistributedDcbModel<dim>::record_advance() {
   const auto o = openings();
   interface_->commit(o);
-  law::RCurvePoint pt;
+  result::RCurvePoint pt;
   const double B = specimen_.width;
   const double x_tip = x_st_[tip_];
   pt.a = x_tip;
@@ -1566,7 +1567,7 @@ law::RCurvePoint DistributedDcbModel<dim>::record_advance() {
   pt.external_work = work_ * B;
   pt.strain_energy = U * B;
   pt.zone_recoverable = U_zone * B;
-  pt.dissipated = (work_ - U - U_zone) * B; // R_energy: law::fill_r_energy at the end of run()
+  pt.dissipated = (work_ - U - U_zone) * B; // R_energy: result::fill_r_energy at the end of run()
   details_.zone_dissipated.push_back(interface_->dissipated_energy() / width_ * B);
   details_.tip_dissipated.push_back(tip_dissipated_ * B);
   details_.j_after_release.push_back(j_after_release_);
@@ -1578,10 +1579,10 @@ law::RCurvePoint DistributedDcbModel<dim>::record_advance() {
 template <int dim>
 bool DistributedDcbModel<dim>::reached_steady_state(bool final_state) {
   const auto rule = steady_state_rule(prm_, specimen_);
-  const auto s = law::find_steady_state(result_.rcurve, specimen_.initial_crack, specimen_.width,
-                                        law_->critical_opening() > 0, rule);
+  const auto s = result::find_steady_state(result_.rcurve, specimen_.initial_crack, specimen_.width,
+                                           law_->critical_opening() > 0, rule);
   if (s.reached || final_state)
-    law::report_steady_state(result_, s, rule, "FEM");
+    result::report_steady_state(result_, s, rule, "FEM");
   return s.reached;
 }
 
@@ -1665,7 +1666,7 @@ void DistributedDcbModel<dim>::write_interface_csv() const {
 // The algorithm (as DcbModel::run)
 
 template <int dim>
-law::SimulationResult DistributedDcbModel<dim>::run() {
+result::SimulationResult DistributedDcbModel<dim>::run() {
   const auto start = Clock::now();
   result_.model = "fem";
   make_grid();
@@ -1708,8 +1709,9 @@ law::SimulationResult DistributedDcbModel<dim>::run() {
       break;
     }
     load_to_critical();
-    const law::RCurvePoint pt = record_advance();
-    law::check_rcurve_point(pt); // NaN/Inf ends the run naming the column (the same on every rank)
+    const result::RCurvePoint pt = record_advance();
+    result::check_rcurve_point(
+        pt); // NaN/Inf ends the run naming the column (the same on every rank)
     result_.rcurve.push_back(pt);
     if (first_root_move < 0 && pt.root > a0 + 1e-9 * L)
       first_root_move = pt.a;
@@ -1731,7 +1733,7 @@ law::SimulationResult DistributedDcbModel<dim>::run() {
   }
   output_fields(advance + 1);
   write_interface_csv();
-  law::fill_r_energy(result_.rcurve, specimen_.width);
+  result::fill_r_energy(result_.rcurve, specimen_.width);
 
   const auto kinks = law_->kinks();
   const double rise = kinks.size() > 1 ? kinks[1] : law_->critical_opening();
@@ -1798,8 +1800,8 @@ law::SimulationResult DistributedDcbModel<dim>::run() {
 }
 
 template <int dim>
-law::SimulationResult
-run_distributed(const law::Specimen& specimen, const law::Material& material,
+result::SimulationResult
+run_distributed(const specimen::Specimen& specimen, const specimen::Material& material,
                 const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
                 const std::string& output_dir,
                 const std::function<void(const std::string&)>& progress, MPI_Comm comm,

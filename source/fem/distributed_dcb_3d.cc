@@ -4,10 +4,11 @@
 
 namespace fiberbridge::fem::distributed {
 
-template law::SimulationResult run_distributed<3>(const law::Specimen&, const law::Material&,
-                                                  const law::TractionLaw&, double,
-                                                  const FemParameters&, const std::string&,
-                                                  const std::function<void(const std::string&)>&,
-                                                  MPI_Comm, DistributedRunInfo&, FemRunDetails&);
+template result::SimulationResult run_distributed<3>(const specimen::Specimen&,
+                                                     const specimen::Material&,
+                                                     const law::TractionLaw&, double,
+                                                     const FemParameters&, const std::string&,
+                                                     const std::function<void(const std::string&)>&,
+                                                     MPI_Comm, DistributedRunInfo&, FemRunDetails&);
 
 } // namespace fiberbridge::fem::distributed

@@ -6,7 +6,7 @@
 
 namespace fiberbridge::fem {
 
-void check_dcb_inputs(const law::Specimen& specimen, const law::Material& material,
+void check_dcb_inputs(const specimen::Specimen& specimen, const specimen::Material& material,
                       const FemParameters& parameters, const law::TractionLaw* law) {
   specimen.validate();
   material.validate();

@@ -82,7 +82,7 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Tip J domain half-width", "4", Integer(1),
                     "Half-width of the full-height strip around the tip used for the tip J "
                     "domain integral, in elements.");
-  // The steady-state rule shared by every model (law::find_steady_state), under the same key
+  // The steady-state rule shared by every model (result::find_steady_state), under the same key
   // names in the Beam, FEM and MPM sections.
   prm.declare_entry("Steady state window", "10", Double(0),
                     "Steady state: after the notch root moved, R_J has stayed within the plateau "

@@ -159,8 +159,8 @@ struct Mapping {
 /// One record prepared for the misfit: its specimen, modulus and weights.
 struct PreparedRecord {
   const analysis::TestRecord* record;
-  law::Specimen specimen;
-  law::Material material;
+  specimen::Specimen specimen;
+  specimen::Material material;
   double peak_load = 0;
   double compliance = 0;
   std::vector<std::size_t> crack_rows; ///< fresh crack readings (the first excluded)
@@ -259,8 +259,8 @@ private:
 };
 
 /// CBT energy release rate of a record row (P/P(J = 1 J/m^2))^2: a start value only.
-double cbt_g(const law::Specimen& s, const law::Material& m, double load, double a) {
-  const double unit = law::cbt_load_at_crack_length(s, m, 1.0, a);
+double cbt_g(const specimen::Specimen& s, const specimen::Material& m, double load, double a) {
+  const double unit = specimen::cbt_load_at_crack_length(s, m, 1.0, a);
   return std::pow(load / unit, 2);
 }
 
@@ -462,15 +462,15 @@ double initial_compliance(const analysis::TestRecord& rec, const IdentifySetting
   return (spd - sp * sd / n) / var;
 }
 
-double modulus_for_compliance(const law::Specimen& specimen, const law::Material& material,
-                              double compliance) {
+double modulus_for_compliance(const specimen::Specimen& specimen,
+                              const specimen::Material& material, double compliance) {
   // CBT compliance falls monotonically with E_L (chi grows only like its square root):
   // bisection on log E_L.
   double lo = std::log(material.E_L / 50), hi = std::log(material.E_L * 50);
-  law::Material m = material;
+  specimen::Material m = material;
   for (int it = 0; it < 100; ++it) {
     m.E_L = std::exp(0.5 * (lo + hi));
-    if (law::cbt_opening(specimen, m, 1.0, specimen.initial_crack) > compliance)
+    if (specimen::cbt_opening(specimen, m, 1.0, specimen.initial_crack) > compliance)
       lo = std::log(m.E_L);
     else
       hi = std::log(m.E_L);
@@ -478,10 +478,10 @@ double modulus_for_compliance(const law::Specimen& specimen, const law::Material
   return std::exp(0.5 * (lo + hi));
 }
 
-void model_at_openings(const law::SimulationResult& run, const std::vector<double>& opening,
+void model_at_openings(const result::SimulationResult& run, const std::vector<double>& opening,
                        std::vector<double>& load, std::vector<double>& crack_length) {
   const auto& rc = run.rcurve;
-  std::vector<const law::RCurvePoint*> path;
+  std::vector<const result::RCurvePoint*> path;
   for (const auto& p : rc)
     if (path.empty() || p.load_point_opening > path.back()->load_point_opening)
       path.push_back(&p);
@@ -510,7 +510,7 @@ void model_at_openings(const law::SimulationResult& run, const std::vector<doubl
   }
 }
 
-double with_large_displacements(law::SimulationResult& run, double arm_thickness) {
+double with_large_displacements(result::SimulationResult& run, double arm_thickness) {
   const double l1 = 0.5 * arm_thickness; // hinges on the arms' surfaces, no end blocks (l2 = 0)
   double min_F = 1;
   for (auto& p : run.rcurve) {
@@ -533,7 +533,7 @@ double with_large_displacements(law::SimulationResult& run, double arm_thickness
 }
 
 Identification identify_law(const std::vector<analysis::TestRecord>& records,
-                            const law::Specimen& specimen, const law::Material& quoted,
+                            const specimen::Specimen& specimen, const specimen::Material& quoted,
                             const IdentifySettings& settings,
                             const std::function<void(const std::string&)>& progress,
                             const IdentifyJobRunner& run_jobs) {

@@ -7,6 +7,7 @@
 #include "fiberbridge/law/piecewise_linear_law.h"
 
 #include <memory>
+#include <utility>
 
 namespace fiberbridge::law {
 
@@ -17,6 +18,12 @@ std::string rigid_law_insertion_note(const TractionLaw& law) {
          " law inserted extrinsically: each new cohesive segment starts at sigma(0+) = " +
          fmt(law.envelope(0) / units::kPa) +
          " kPa (no elastic rise: the area and Eq. 2 are the law's)";
+}
+
+const TractionLaw& discrete_law(const TractionLaw& law, std::vector<std::string>& notes) {
+  if (std::string note = rigid_law_insertion_note(law); !note.empty())
+    notes.push_back(std::move(note));
+  return law;
 }
 
 TractionLawPtr with_elastic_rise(const TractionLaw& law, double delta_e, const std::string& key) {

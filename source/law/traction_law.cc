@@ -1,7 +1,7 @@
 #include "fiberbridge/law/traction_law.h"
 
+#include "fiberbridge/core/numerical_fault.h"
 #include "fiberbridge/core/units.h"
-#include "fiberbridge/law/numerical_fault.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,7 +77,7 @@ CohesiveResponse respond_unchecked(const TractionLaw& law, double opening, doubl
 
 CohesiveResponse TractionLaw::respond(double opening, double delta_max,
                                       double contact_stiffness) const {
-  // The law boundary of the numerical-fault checks (law/numerical_fault.h): a NaN opening would
+  // The law boundary of the numerical-fault checks (core/numerical_fault.h): a NaN opening would
   // fall through every comparison below into the secant branch and come back as a NaN traction.
   if (!std::isfinite(opening) || !std::isfinite(delta_max))
     check_finite(!std::isfinite(opening) ? opening : delta_max,

@@ -8,8 +8,8 @@
 #include "fiberbridge/core/format.h"
 #include "fiberbridge/core/output_guard.h"
 #include "fiberbridge/law/law_fingerprint.h"
-#include "fiberbridge/law/numerical_fault.h"
 #include "fiberbridge/mpm/dcb.h"
+#include "fiberbridge/result/numerical_fault.h"
 
 #include <filesystem>
 #include <map>
@@ -134,7 +134,7 @@ bool DcbModel::resume_from_checkpoint() {
     vtu_->set_written(std::move(written));
   // The diagnosis context counts the restored advances as accepted (numerical_fault.h).
   for (const auto& p : rcurve_)
-    law::check_rcurve_point(p);
+    result::check_rcurve_point(p);
   resumed_ = true;
   const ExplicitSolver& s = *solver_;
   const std::string what = "resumed from the checkpoint " + path + " at step " +

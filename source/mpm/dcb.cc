@@ -4,14 +4,14 @@
 #include "fiberbridge/core/format.h"
 #include "fiberbridge/core/output_guard.h"
 #include "fiberbridge/core/units.h"
-#include "fiberbridge/law/numerical_fault.h"
 #include "fiberbridge/law/rigid_law.h"
-#include "fiberbridge/law/steady_state.h"
 #include "fiberbridge/mpm/checkpoint.h"
 #include "fiberbridge/mpm/crack.h"
 #include "fiberbridge/mpm/explicit_solver.h"
 #include "fiberbridge/mpm/j_integral.h"
 #include "fiberbridge/mpm/vtu_writer.h"
+#include "fiberbridge/result/numerical_fault.h"
+#include "fiberbridge/result/steady_state.h"
 
 #include <algorithm>
 #include <chrono>
@@ -22,7 +22,7 @@
 
 namespace fiberbridge::mpm {
 
-double arm_vibration_period(const law::Specimen& s, const law::Material& m, double a) {
+double arm_vibration_period(const specimen::Specimen& s, const specimen::Material& m, double a) {
   const double h = s.arm_thickness();
   const double I = s.width * h * h * h / 12;
   return 1.787 * a * a * std::sqrt(m.density * s.width * h / (m.E_L * I));
@@ -34,8 +34,8 @@ using units::mm;
 
 } // namespace
 
-void check_dcb_inputs(const law::Specimen& s, const law::Material& m, const MpmParameters& p,
-                      const law::TractionLaw* law) {
+void check_dcb_inputs(const specimen::Specimen& s, const specimen::Material& m,
+                      const MpmParameters& p, const law::TractionLaw* law) {
   p.validate();
   s.validate();
   m.validate();
@@ -56,8 +56,9 @@ void check_dcb_inputs(const law::Specimen& s, const law::Material& m, const MpmP
   (void)law;
 }
 
-DcbModel::DcbModel(const law::Specimen& s, const law::Material& m, const law::TractionLaw& law,
-                   double j_tip, const MpmParameters& p, const std::string& output_dir,
+DcbModel::DcbModel(const specimen::Specimen& s, const specimen::Material& m,
+                   const law::TractionLaw& law, double j_tip, const MpmParameters& p,
+                   const std::string& output_dir,
                    const std::function<void(const std::string&)>& progress)
     : spec_(s), mat_(m), user_law_(law), j_tip_(j_tip), prm_(p), out_dir_(output_dir),
       progress_(progress), elastic_(m) {
@@ -70,13 +71,11 @@ DcbModel::DcbModel(const law::Specimen& s, const law::Material& m, const law::Tr
 }
 
 void DcbModel::choose_law() {
-  // Extrinsic insertion (law/rigid_law.h): the crack carries the law as given. A fresh segment
-  // starts at sigma(0+) with delta_max = 0; its traction is explicit and bounded by the law, so a
-  // rigid law needs no elastic rise for the time step (the secant of a segment that closes below
-  // its delta_max is bounded the same way).
-  law_ = &user_law_;
-  if (const std::string note = law::rigid_law_insertion_note(user_law_); !note.empty())
-    notes_.push_back(note);
+  // The one rule for rigid laws (law::discrete_law, extrinsic insertion): the crack carries the
+  // law as given. A fresh segment starts at sigma(0+) with delta_max = 0; its traction is explicit
+  // and bounded by the law, so a rigid law needs no elastic rise for the time step (the secant of
+  // a segment that closes below its delta_max is bounded the same way).
+  law_ = &law::discrete_law(user_law_, notes_);
   for (const auto& n : prm_.deprecation_notes)
     notes_.push_back(n);
 }
@@ -85,9 +84,9 @@ void DcbModel::setup_body() {
   const double c = prm_.cell_size;
   const double h = spec_.arm_thickness(), L = spec_.length;
   cell_ = c;
-  // check_dcb_inputs() made sure of at least 2 cells through an arm. Two cells through a cantilever
-  // bend it 5.7 % too stiff, three 3.7 % (tests/mpm,
-  // MpmCantilever.BendingNeedsCellsThroughTheThickness; docs/verification.md, "Thin arms").
+  // check_dcb_inputs() made sure of at least 2 cells through an arm. Under 3 a cantilever bends
+  // over 5 % too stiff (the bound tests/mpm, MpmCantilever.BendingNeedsCellsThroughTheThickness,
+  // asserts; the measured figures: docs/verification.md, MPM table).
   if (h < 3 * c * (1 - 1e-9))
     notes_.push_back("thin arm: MPM/Cell size " + fmt(c / mm) + " mm gives " + fmt(h / c, 3) +
                      " cells through the " + fmt(h / mm) +
@@ -113,8 +112,8 @@ void DcbModel::setup_body() {
   // Room for the arms to swing open: twice the LEFM opening with the whole steady-state
   // toughness at the last crack length (a bridged DCB opens less than that at the same tip).
   const double G_ss = j_tip_ + law_->area();
-  const double P_end = law::cbt_load_at_crack_length(spec_, mat_, G_ss, end_tip_);
-  opening_allowance_ = 2 * law::cbt_opening(spec_, mat_, P_end, end_tip_);
+  const double P_end = specimen::cbt_load_at_crack_length(spec_, mat_, G_ss, end_tip_);
+  opening_allowance_ = 2 * specimen::cbt_opening(spec_, mat_, P_end, end_tip_);
   // The crack plane y = 0 lies in mid-cell, so no node sits on it.
   const int k = static_cast<int>(std::ceil((h + 0.5 * opening_allowance_) / c)) + 3;
   const int nx = static_cast<int>(std::ceil(L / c)) + 5;
@@ -158,8 +157,8 @@ void DcbModel::setup_body() {
 void DcbModel::setup_loading() {
   const double a0 = spec_.initial_crack;
   t_vib0_ = arm_vibration_period(spec_, mat_, a0);
-  const double P0 = law::cbt_load_at_crack_length(spec_, mat_, j_tip_, a0);
-  opening0_ = law::cbt_opening(spec_, mat_, P0, a0);
+  const double P0 = specimen::cbt_load_at_crack_length(spec_, mat_, j_tip_, a0);
+  opening0_ = specimen::cbt_opening(spec_, mat_, P0, a0);
   rate_ = opening0_ / (prm_.loading_periods * t_vib0_);
   ramp_time_ = prm_.ramp_periods * t_vib0_;
   // A ramp of a few arm periods or less excites the arms: say so instead of calling it static.
@@ -206,7 +205,7 @@ void DcbModel::advance_tip(double j_measured) {
     crack.advance(x, ux, uy);
   }
 
-  law::RCurvePoint pt;
+  result::RCurvePoint pt;
   pt.a = x_new;
   pt.J_tip = j_measured;
   pt.time = s.time();
@@ -236,7 +235,7 @@ void DcbModel::advance_tip(double j_measured) {
   // the unbalanced stress of the cut acts on light node fields at the newly split column) and
   // the PIC damping. Both count as dissipated, beside the zone's share of the law.
   pt.dissipated = crack.zone_dissipated(B) + s.damping_loss() + s.numerical_loss();
-  law::check_rcurve_point(pt); // NaN/Inf ends the run naming the column
+  result::check_rcurve_point(pt); // NaN/Inf ends the run naming the column
   rcurve_.push_back(pt);
   if (pt.strain_energy > 0)
     max_kinetic_ratio_ = std::max(max_kinetic_ratio_, pt.kinetic_energy / pt.strain_energy);
@@ -318,7 +317,7 @@ double DcbModel::far_field_j() const {
   const double x_left = 0.5 * spec_.initial_crack;
   const double x_right = 0.5 * (crack_->tip() + (prm_.tip_j_cells + 2) * cell_ + spec_.length);
   if (!(x_left - 0.5 * w > 1.5 * cell_ && x_right + 0.5 * w < spec_.length))
-    return law::not_available;
+    return result::not_available;
   return far_field_j_integral(*solver_, x_left, x_right, w);
 }
 
@@ -329,7 +328,7 @@ const Crack& DcbModel::crack() const {
   return *crack_;
 }
 
-law::SimulationResult DcbModel::run() {
+result::SimulationResult DcbModel::run() {
   session_start_ = std::chrono::steady_clock::now();
   running_ = true;
   // Checkpoints (mpm/checkpoint.h): continue from one when asked to; a fresh run removes a
@@ -357,7 +356,7 @@ law::SimulationResult DcbModel::run() {
   if (vtu_ && (rcurve_.empty() || rcurve_.size() % prm_.vtu_every_advances != 0))
     vtu_->write(s);
 
-  law::SimulationResult r;
+  result::SimulationResult r;
   r.model = "mpm";
   r.rcurve = rcurve_;
   r.n_dofs_or_particles = static_cast<long>(s.particles().size());
@@ -384,7 +383,7 @@ law::SimulationResult DcbModel::run() {
   return r;
 }
 
-void DcbModel::finish(law::SimulationResult& r) const {
+void DcbModel::finish(result::SimulationResult& r) const {
   r.method.push_back(
       "2D explicit MPM, update-stress-last, uGIMP, corotational orthotropic elasticity (plane " +
       std::string(mat_.plane_stress ? "stress" : "strain") +
@@ -418,7 +417,7 @@ void DcbModel::finish(law::SimulationResult& r) const {
                      "after each row (the per-advance increments ring with the arm)");
   const auto lagging_advances =
       std::count_if(rcurve_.begin(), rcurve_.end(),
-                    [&](const law::RCurvePoint& p) { return growth_->lagged(p.J_tip); });
+                    [&](const result::RCurvePoint& p) { return growth_->lagged(p.J_tip); });
   if (growth_->shortened_windows() > 0 || lagging_advances > 0)
     r.notes.push_back(
         "growth not fully quasi-static: at " + std::to_string(growth_->shortened_windows()) +
@@ -428,9 +427,8 @@ void DcbModel::finish(law::SimulationResult& r) const {
         "partly averaged and R_J scatters), and at " +
         std::to_string(lagging_advances) + " the tip lagged the loading (window-mean J above " +
         fmt(GrowthCriterion::lag_tolerance) +
-        " J_tip); raise MPM/Loading periods "
-        "(the linear-softening verification run moved from -1.7 % at 8 to -2.3 % at 32 periods, "
-        "where the result no longer depends on the window)");
+        " J_tip); raise MPM/Loading periods until the result no longer depends on the window "
+        "(docs/verification.md, \"MPM growth window\")");
   r.notes.push_back("largest kinetic/strain energy ratio at a tip advance: " +
                     fmt(max_kinetic_ratio_, 3));
   {
@@ -452,51 +450,39 @@ void DcbModel::finish(law::SimulationResult& r) const {
   r.notes.push_back(
       "discretization: a tip advance of a whole cell at J_tip releases on average the mean "
       "energy release rate over that step, below J_tip by about 2 da/(a + chi h) for an opening-"
-      "controlled DCB (beam theory; 6 % for 2.5 mm steps at a = 40 mm); R_energy in the LEFM "
-      "verification run (4 cells per arm) was measured at that value within 1 %, J_ff at the "
-      "advances 4 % below J_tip");
+      "controlled DCB (beam theory), so R_energy reads low by that much");
   if (law_->critical_opening() > 0)
     r.notes.push_back(
         "known limitation (bridging): the tip cell is only partly split, so the tip crack "
-        "particle reads an opening (the elastic stretch between the node rows, 0.015 mm with "
-        "2.5 mm cells in the linear-softening verification run, 8 % of delta_c); the tip J "
+        "particle reads an opening (the elastic stretch between the node rows); the tip J "
         "subtracts the law's work over it, but a segment born at the next advance starts at "
-        "half that opening, and its law work from zero is never paid by the tractions. In that "
-        "run, loaded quasi-statically, R_J plateaus 2.3 % below J_tip + J_c: J_ff reads 1.6 % "
-        "below tip J + zone work (path independence), and segments that unload a little while "
-        "the arm rings work below the law's envelope (1 %); at 1.67 and 1.25 mm cells -2.5 and "
-        "-3.3 % (not a cell-size error)");
-  // R_energy from the released energy between the advances before and after each row (the
-  // shared stencil): the per-advance increments of W and U ring with the arm, the central
-  // difference averages that out.
-  auto& rc = r.rcurve;
-  law::fill_r_energy(rc, spec_.width);
-
-  // Steady state: the shared rule, evaluated on the whole run. The root position is known to a
-  // fraction of a cell (crack particles every half cell), so it has moved once it passes a0 by a
-  // quarter cell. An advance where the tip lagged the loading happened above J_tip: its R_J
-  // belongs to a higher tip toughness, so it stays in the R curve (its J_tip column shows it)
-  // but not in the plateau. (The PVA ladder lagged at the last 1-3 advances of the 4, 3.33 and
-  // 2.5 mm runs, near the end ligament, where the beam-theory time per step that cuts the window
-  // came out too long; leaving them out moved G_ss by +0.1, 0.0 and -0.8 %.)
-  law::SteadyStateRule rule;
+        "half that opening, and its law work from zero is never paid by the tractions. Loaded "
+        "quasi-statically, R_J plateaus below J_tip + J_c: J_ff reads below tip J + zone work "
+        "(path independence), and segments that unload a little while the arm rings work below "
+        "the law's envelope; finer cells do not close the gap (not a cell-size error; "
+        "docs/verification.md, \"MPM growth window\")");
+  // The shared post-processing (result::finish_rcurve): R_energy over the neighbouring
+  // advances, the steady-state rule on the whole run, R_J against Eq. 2. The root position is
+  // known to a fraction of a cell (crack particles every half cell), so it has moved once it
+  // passes a0 by a quarter cell. An advance where the tip lagged the loading happened above
+  // J_tip: its R_J belongs to a higher tip toughness, so it stays in the R curve (its J_tip column
+  // shows it) but not in the plateau (docs/verification.md, "MPM cell-size ladder").
+  result::SteadyStateRule rule;
   rule.window = prm_.steady_state_window;
   rule.tolerance = prm_.plateau_tolerance;
   rule.root_move = 0.25 * cell_;
-  std::vector<bool> lagged(rc.size());
-  for (std::size_t i = 0; i < rc.size(); ++i)
-    lagged[i] = growth_->lagged(rc[i].J_tip);
-  const auto steady =
-      law::find_steady_state(rc, a0_, spec_.width, law_->critical_opening() > 0, rule, lagged);
-  law::report_steady_state(r, steady, rule, "MPM");
-  r.rdelta_rel_error_vs_eq2 = law::rdelta_error_vs_eq2(r, user_law_, j_tip_);
+  std::vector<bool> lagged(rcurve_.size());
+  for (std::size_t i = 0; i < rcurve_.size(); ++i)
+    lagged[i] = growth_->lagged(rcurve_[i].J_tip);
+  result::finish_rcurve(r, user_law_, j_tip_, a0_, spec_.width, rule, "MPM", lagged);
 }
 
-law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
-                                   const law::TractionLaw& law, double j_tip,
-                                   const MpmParameters& params, const std::string& output_dir,
-                                   const std::function<void(const std::string&)>& progress) {
-  law::begin_fault_context("mpm");
+result::SimulationResult simulate_dcb(const specimen::Specimen& specimen,
+                                      const specimen::Material& material,
+                                      const law::TractionLaw& law, double j_tip,
+                                      const MpmParameters& params, const std::string& output_dir,
+                                      const std::function<void(const std::string&)>& progress) {
+  fiberbridge::begin_fault_context("mpm");
   DcbModel model(specimen, material, law, j_tip, params, output_dir, progress);
   return model.run();
 }

@@ -9,8 +9,9 @@
 
 namespace fiberbridge::mpm {
 
-GrowthCriterion::GrowthCriterion(const law::Specimen& s, const law::Material& m, double j_tip,
-                                 double window_periods, double step, double check_interval)
+GrowthCriterion::GrowthCriterion(const specimen::Specimen& s, const specimen::Material& m,
+                                 double j_tip, double window_periods, double step,
+                                 double check_interval)
     : spec_(s), mat_(m), j_tip_(j_tip), window_periods_(window_periods), step_(step),
       check_interval_(check_interval) {}
 
@@ -27,7 +28,8 @@ void GrowthCriterion::set_window(double a, double opening, double rate, bool cou
   // window takes at most 0.7 of it (0.5 rode the ringing's peaks: -4.9 % on G_ss in the linear-
   // softening run at 8 loading periods; uncapped, the tip lagged at the end of the PVA run).
   auto lefm_opening = [&](double x) {
-    return law::cbt_opening(spec_, mat_, law::cbt_load_at_crack_length(spec_, mat_, 1.0, x), x);
+    return specimen::cbt_opening(spec_, mat_,
+                                 specimen::cbt_load_at_crack_length(spec_, mat_, 1.0, x), x);
   };
   const double step_time = opening * (lefm_opening(a + step_) / lefm_opening(a) - 1) / rate;
   if (window > 0.7 * step_time) {

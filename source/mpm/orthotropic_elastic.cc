@@ -7,11 +7,11 @@
 
 namespace fiberbridge::mpm {
 
-OrthotropicElastic::OrthotropicElastic(const law::Material& m) {
+OrthotropicElastic::OrthotropicElastic(const specimen::Material& m) {
   m.validate("Material");
   // Reduced in-plane stiffness (grain along x), the inverse of the compliance the FEM uses:
   // plane stress, or plane strain with the radial constants (sigma_zz does no work there).
-  const law::InPlaneStiffness q = law::in_plane_stiffness(m);
+  const specimen::InPlaneStiffness q = specimen::in_plane_stiffness(m);
   q11_ = q.q11;
   q22_ = q.q22;
   q12_ = q.q12;

@@ -20,13 +20,13 @@ using units::mm;
 
 /// A curve with the tip at a0 + i da; the root stays at a0 for the first `developing` rows, then
 /// moves with the tip. R values are affine in a, the load rises then falls.
-law::SimulationResult make_curve(const std::string& model, int rows, int developing, double da,
-                                 double scale = 1) {
-  law::SimulationResult r;
+result::SimulationResult make_curve(const std::string& model, int rows, int developing, double da,
+                                    double scale = 1) {
+  result::SimulationResult r;
   r.model = model;
   const double a0 = 0.1;
   for (int i = 0; i < rows; ++i) {
-    law::RCurvePoint p;
+    result::RCurvePoint p;
     p.a = a0 + i * da;
     p.root = i < developing ? a0 : a0 + (i - developing + 1) * da;
     p.delta_root = 1e-4 * i;
@@ -113,12 +113,12 @@ namespace {
 
 /// A simulated R curve that is Eq. 2 of `law` exactly (law::r_curve_eq2), sampled at `rows`
 /// openings up to 1.2 delta_c (past delta_c R is flat at G_ss).
-law::SimulationResult eq2_curve(const law::TractionLaw& law, double j_tip, int rows) {
-  law::SimulationResult r;
+result::SimulationResult eq2_curve(const law::TractionLaw& law, double j_tip, int rows) {
+  result::SimulationResult r;
   r.model = "beam";
   const double dc = law.critical_opening();
   for (int i = 1; i <= rows; ++i) {
-    law::RCurvePoint p;
+    result::RCurvePoint p;
     p.a = 0.1 + i * 1e-3;
     p.delta_root = 1.2 * dc * i / rows;
     p.R_energy = p.R_eq2 = law::r_curve_eq2(law, j_tip, p.delta_root);

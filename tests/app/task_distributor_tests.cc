@@ -153,12 +153,12 @@ TEST(TaskDistributor, FailureReachesEveryRankWithItsType) {
 }
 
 TEST(ResultCodec, RoundTripIsBitExactWithNaN) {
-  law::SimulationResult r;
+  result::SimulationResult r;
   r.model = "fem";
   for (int i = 0; i < 5; ++i) {
-    law::RCurvePoint p;
+    result::RCurvePoint p;
     p.a = 0.1 + i * 1e-3 / 3.0; // not representable in short decimals
-    p.load = i == 2 ? law::not_available : 412.123456789012345 * (1 + i * 1e-15);
+    p.load = i == 2 ? result::not_available : 412.123456789012345 * (1 + i * 1e-15);
     p.R_J = 1.0 / 3.0 + i;
     r.rcurve.push_back(p);
   }
@@ -171,9 +171,9 @@ TEST(ResultCodec, RoundTripIsBitExactWithNaN) {
   const auto back =
       app::result_from_json(app::json_from_bytes(app::json_to_bytes(app::result_to_json(r))));
   ASSERT_EQ(back.rcurve.size(), r.rcurve.size());
-  EXPECT_EQ(
-      std::memcmp(back.rcurve.data(), r.rcurve.data(), r.rcurve.size() * sizeof(law::RCurvePoint)),
-      0)
+  EXPECT_EQ(std::memcmp(back.rcurve.data(), r.rcurve.data(),
+                        r.rcurve.size() * sizeof(result::RCurvePoint)),
+            0)
       << "every double, NaN included, must come back bit for bit";
   EXPECT_EQ(back.model, "fem");
   EXPECT_EQ(back.G_ss, r.G_ss);

@@ -15,9 +15,9 @@
 
 using namespace fiberbridge;
 using namespace fiberbridge::beam;
-using law::Material;
-using law::SimulationResult;
-using law::Specimen;
+using result::SimulationResult;
+using specimen::Material;
+using specimen::Specimen;
 using units::kPa;
 using units::mm;
 using units::MPa;
@@ -31,7 +31,7 @@ bool has_note(const SimulationResult& r, const std::string& text) {
                      [&](const std::string& n) { return n.find(text) != std::string::npos; });
 }
 
-double energy_balance_error(const law::RCurvePoint& p) {
+double energy_balance_error(const result::RCurvePoint& p) {
   return std::abs(p.external_work - p.strain_energy - p.zone_recoverable - p.dissipated) /
          p.external_work;
 }
@@ -115,7 +115,7 @@ TEST(ArmOnFoundation, CalibratedFoundationGivesCorrectedBeamTheoryLoad) {
   const double k = calibrated_foundation_modulus(s, m, 5.0 / 6.0);
   const ArmConstants arm = arm_constants(s, m, 5.0 / 6.0, k);
   // Bisection to 1e-13 in k; c(k) is smooth, so c matches chi h to round-off.
-  EXPECT_NEAR(root_rotation_length(arm), law::cbt_chi(m) * s.arm_thickness(), 1e-9);
+  EXPECT_NEAR(root_rotation_length(arm), specimen::cbt_chi(m) * s.arm_thickness(), 1e-9);
   // The tip G of the arm is its section J at the tip (M = P a, Q = -P, theta = P (a t_M - t_Q)):
   // P^2 (a^2 + 2 c a + c2)/(B EI) with c = -EI t_M and c2 = EI/S + 2 EI t_Q. For the
   // semi-infinite Timoshenko arm on a Winkler foundation c2 = c^2, i.e. G = P^2 (a + c)^2/(B EI)
@@ -123,8 +123,8 @@ TEST(ArmOnFoundation, CalibratedFoundationGivesCorrectedBeamTheoryLoad) {
   // crack length, to round-off. (Checked here, with the material of the seed and an isotropic
   // one below.)
   for (double a : {60 * mm, 100 * mm, 150 * mm, 250 * mm})
-    EXPECT_NEAR(lefm_state(arm, j_tip, a).load / law::cbt_load_at_crack_length(s, m, j_tip, a), 1.0,
-                1e-9)
+    EXPECT_NEAR(lefm_state(arm, j_tip, a).load / specimen::cbt_load_at_crack_length(s, m, j_tip, a),
+                1.0, 1e-9)
         << "a = " << a / mm << " mm";
   // The physical guess 2 E_T/h is softer: the shear of the arm is not in it.
   EXPECT_GT(k, 2 * m.E_T / s.arm_thickness());
@@ -135,7 +135,7 @@ TEST(ArmOnFoundation, CalibratedFoundationGivesCorrectedBeamTheoryLoad) {
   const ArmConstants arm_iso =
       arm_constants(s, iso, 5.0 / 6.0, calibrated_foundation_modulus(s, iso, 5.0 / 6.0));
   EXPECT_NEAR(lefm_state(arm_iso, j_tip, 80 * mm).load /
-                  law::cbt_load_at_crack_length(s, iso, j_tip, 80 * mm),
+                  specimen::cbt_load_at_crack_length(s, iso, j_tip, 80 * mm),
               1.0, 1e-9);
 }
 
@@ -175,11 +175,11 @@ TEST(BeamLefm, LoadFollowsCbtAndEveryRIsJtip) {
     // On a ligament longer than ~6/lambda (100 mm) the semi-infinite analytic model holds and
     // its load is exactly CBT's (test above). The FE load differs by the O(h_e^2) lumping
     // (0.006 % at a = 100 mm) and the finite ligament (0.015 % at a = 200 mm); bound 0.1 %.
-    const double P_cbt = law::cbt_load_at_crack_length(s, m, j_tip, q.a);
+    const double P_cbt = specimen::cbt_load_at_crack_length(s, m, j_tip, q.a);
     EXPECT_NEAR(q.load / P_cbt, 1.0, 1e-3) << "a = " << q.a / mm;
     // The opening is CBT's in the a^3 and a^2 terms; the a^1 and a^0 terms (shear and
     // foundation) differ: 0.35 % at a = 100 mm, falling like 1/a^2. Bound 0.6 %.
-    EXPECT_NEAR(q.load_point_opening / law::cbt_opening(s, m, q.load, q.a), 1.0, 6e-3)
+    EXPECT_NEAR(q.load_point_opening / specimen::cbt_opening(s, m, q.load, q.a), 1.0, 6e-3)
         << "a = " << q.a / mm;
     ++compared;
   }
@@ -207,7 +207,7 @@ TEST(BeamLefm, GivenFoundationModulusMatchesTheAnalyticArmOnFoundation) {
     EXPECT_NEAR(q.load_point_opening / exact.load_point_opening, 1.0, 1e-3) << "a = " << q.a / mm;
     max_cbt_difference =
         std::max(max_cbt_difference,
-                 std::abs(exact.load / law::cbt_load_at_crack_length(s, m, j_tip, q.a) - 1));
+                 std::abs(exact.load / specimen::cbt_load_at_crack_length(s, m, j_tip, q.a) - 1));
   }
   EXPECT_GT(max_cbt_difference, 1e-2);
 }
@@ -218,7 +218,7 @@ TEST(BeamLefm, DiscretizationErrorsConvergeAtSecondOrder) {
   // estimate of the tip release rate (vs J_tip) must improve ~4x per halving of the elements.
   const Specimen s;
   const Material m;
-  const double P_cbt = law::cbt_load_at_crack_length(s, m, j_tip, s.initial_crack);
+  const double P_cbt = specimen::cbt_load_at_crack_length(s, m, j_tip, s.initial_crack);
   double load_err[3], tip_err[3];
   const int n[3] = {100, 200, 400};
   for (int i = 0; i < 3; ++i) {

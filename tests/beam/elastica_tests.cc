@@ -55,16 +55,16 @@ EllipticCantilever elliptic_cantilever(double P) {
 }
 
 /// The records' composite DCB (docs/verification.md, "Thin arms"): 25 mm wide, 2.7 mm arms.
-law::Specimen composite_specimen() {
-  law::Specimen s;
+specimen::Specimen composite_specimen() {
+  specimen::Specimen s;
   s.height = 5.4 * mm;
   s.width = 25 * mm;
   s.initial_crack = 35 * mm;
   s.length = 123 * mm;
   return s;
 }
-law::Material composite_material() {
-  law::Material m;
+specimen::Material composite_material() {
+  specimen::Material m;
   m.E_L = 19.3e9;
   m.E_T = 6.11e9;
   m.G_LT = 2.288e9;
@@ -74,9 +74,9 @@ law::Material composite_material() {
 
 /// The same LEFM run with small and with finite rotations.
 struct SmallAndFinite {
-  law::SimulationResult small, finite;
+  result::SimulationResult small, finite;
 };
-SmallAndFinite run_both(const law::Specimen& s, const law::Material& m, double j,
+SmallAndFinite run_both(const specimen::Specimen& s, const specimen::Material& m, double j,
                         BeamParameters p) {
   SmallAndFinite r;
   r.small = simulate_dcb(s, m, law::NoBridgingLaw{}, j, p);
@@ -172,8 +172,8 @@ TEST(BeamFiniteRotations, AgreesWithSmallRotationsAtSmallOpenings) {
   // opening differ from the small ones by 0.13 (opening/a)^2 and 0.10 (opening/a)^2 on the
   // thin composite (docs/verification.md table), 0.1 (opening/a)^2 here; the bound is
   // 0.2 (opening/a)^2 plus 1e-9 for the elastica's secant and Runge-Kutta errors.
-  const law::Specimen s;
-  const law::Material m;
+  const specimen::Specimen s;
+  const specimen::Material m;
   BeamParameters p;
   const auto [small, finite] = run_both(s, m, 200, p);
   ASSERT_EQ(small.rcurve.size(), finite.rcurve.size());

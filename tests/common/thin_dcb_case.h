@@ -3,15 +3,15 @@
 // (tests/beam/record_from_beam_tests.cc, tests/fem/record_from_fem_tests.cc).
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
-#include "fiberbridge/law/rcurve.h"
-#include "fiberbridge/law/specimen.h"
+#include "fiberbridge/result/rcurve.h"
+#include "fiberbridge/specimen/specimen.h"
 
 namespace fiberbridge::thin_dcb_case {
 
 /// A glass-fibre DCB like the shared records (data/dcb_records/README.md): B 25 mm, arms
 /// 2.7 mm, length 123 mm, a0 35 mm.
-inline law::Specimen specimen() {
-  law::Specimen s;
+inline specimen::Specimen specimen() {
+  specimen::Specimen s;
   s.length = 123 * units::mm;
   s.width = 25 * units::mm;
   s.height = 5.4 * units::mm;
@@ -20,8 +20,8 @@ inline law::Specimen specimen() {
 }
 
 /// The README's approximate moduli.
-inline law::Material material() {
-  law::Material m;
+inline specimen::Material material() {
+  specimen::Material m;
   m.E_L = 19.3e9;
   m.E_T = 6.11e9;
   m.G_LT = 2.29e9;
@@ -44,7 +44,7 @@ inline constexpr double j_tip = 250;
 
 /// The rows up to the first fall of the load-point opening (snap-back near the far end cannot be
 /// sampled at constant crosshead rate).
-inline law::SimulationResult rising_part(law::SimulationResult r) {
+inline result::SimulationResult rising_part(result::SimulationResult r) {
   std::size_t n = 1;
   while (n < r.rcurve.size() && r.rcurve[n].load_point_opening > r.rcurve[n - 1].load_point_opening)
     ++n;

@@ -46,7 +46,7 @@ unsigned world_size() {
 
 /// Largest relative difference of R_J, load, load-point opening and root between two runs
 /// (the crack positions must agree exactly: both advance element by element).
-double max_rel_diff(const law::SimulationResult& a, const law::SimulationResult& b) {
+double max_rel_diff(const result::SimulationResult& a, const result::SimulationResult& b) {
   EXPECT_EQ(a.rcurve.size(), b.rcurve.size());
   double m = 0;
   auto rel = [](double x, double y) { return std::abs(x - y) / std::max(std::abs(x), 1e-300); };
@@ -61,7 +61,7 @@ double max_rel_diff(const law::SimulationResult& a, const law::SimulationResult&
   return m;
 }
 
-void print(const char* what, const law::SimulationResult& r) {
+void print(const char* what, const result::SimulationResult& r) {
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
     return;
   std::cout << "  " << what << ": " << r.rcurve.size() << " advances, G_ss " << r.G_ss << ", "
@@ -90,7 +90,7 @@ fem::FemParameters distributed_parameters() {
 // with the serial engine, removed in issue 14.)
 TEST(FemDistributed, LowRankUpdateMatchesAmgRefactorization2D) {
   const auto spec = short_dcb();
-  const law::Material wood;
+  const specimen::Material wood;
   const auto law = short_trilinear();
   auto prm = distributed_parameters();
   prm.linear_solver = fem::FemParameters::LinearSolver::klu;
@@ -118,7 +118,7 @@ TEST(FemDistributed, LowRankUpdateMatchesAmgRefactorization2D) {
 // (P ~ sqrt(J): a 10 % error in J is 5 % in P).
 TEST(FemDistributed, Lefm3dFollowsCorrectedBeamTheory) {
   const auto spec = short_dcb();
-  const law::Material wood;
+  const specimen::Material wood;
   const double j_tip = 200;
   auto prm = distributed_parameters();
   prm.dimension = 3;
@@ -136,7 +136,7 @@ TEST(FemDistributed, Lefm3dFollowsCorrectedBeamTheory) {
   EXPECT_TRUE(r.reached_steady_state);
   for (std::size_t i = 0; i < r.rcurve.size(); ++i) {
     const auto& p = r.rcurve[i];
-    const double cbt = law::cbt_load_at_crack_length(spec, wood, j_tip, p.a);
+    const double cbt = specimen::cbt_load_at_crack_length(spec, wood, j_tip, p.a);
     std::cout << "  a = " << p.a / mm << " mm: P_3D / P_CBT = " << p.load / cbt
               << ", P_3D / P_2D,plane stress = " << p.load / r2.rcurve[i].load << "\n";
     EXPECT_NEAR(p.load / cbt, 1.0, 0.015) << "a = " << p.a / mm << " mm";
@@ -164,7 +164,7 @@ TEST(FemDistributed, Thin3dReproducesPlaneStress) {
   spec.width = 1 * mm; // the 2D load is per width times this width
   for (const bool coupled : {false, true}) {
     auto prm = distributed_parameters();
-    law::Material wood;
+    specimen::Material wood;
     if (!coupled) {
       wood.nu_LR = 0;
       wood.nu_RT = 0;
@@ -220,7 +220,7 @@ TEST(FemDistributed, DeprecatedEngineKeysAreNoted) {
   EXPECT_EQ(p.linear_solver, fem::FemParameters::LinearSolver::klu);
   ASSERT_EQ(p.deprecation_notes.size(), 2u);
   EXPECT_TRUE(fem::use_distributed_engine(p, 1));
-  const auto r = fem::simulate_dcb(short_dcb(), law::Material(), short_trilinear(), 200, p);
+  const auto r = fem::simulate_dcb(short_dcb(), specimen::Material(), short_trilinear(), 200, p);
   unsigned noted = 0;
   for (const auto& n : r.notes)
     noted += n.find("FEM/Engine = serial is deprecated") != std::string::npos ||
@@ -252,9 +252,9 @@ TEST_F(FemMpi, TwoRanksGiveTheOneRankRCurve2D) {
   const auto law = short_trilinear();
   const auto prm = distributed_parameters();
   fem::DistributedRunInfo i1, i2;
-  const auto r1 = fem::simulate_dcb_distributed(spec, law::Material(), law, 200, prm, "", {},
+  const auto r1 = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
                                                 MPI_COMM_SELF, &i1);
-  const auto r2 = fem::simulate_dcb_distributed(spec, law::Material(), law, 200, prm, "", {},
+  const auto r2 = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
                                                 MPI_COMM_WORLD, &i2);
   EXPECT_EQ(i1.n_ranks, 1u);
   EXPECT_EQ(i2.n_ranks, world_size());
@@ -274,11 +274,11 @@ TEST_F(FemMpi, KinsolOnTwoRanksAgreesWithNewton) {
   const auto spec = short_dcb();
   const auto law = short_trilinear();
   auto prm = distributed_parameters();
-  const auto n =
-      fem::simulate_dcb_distributed(spec, law::Material(), law, 200, prm, "", {}, MPI_COMM_WORLD);
+  const auto n = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
+                                               MPI_COMM_WORLD);
   prm.nonlinear_solver = fem::FemParameters::NonlinearSolver::kinsol;
-  const auto k =
-      fem::simulate_dcb_distributed(spec, law::Material(), law, 200, prm, "", {}, MPI_COMM_WORLD);
+  const auto k = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
+                                               MPI_COMM_WORLD);
   ASSERT_GE(n.rcurve.size(), 10u);
   const double diff = max_rel_diff(n, k);
   std::cout << "  KINSOL vs Newton on " << world_size() << " ranks: max relative difference "
@@ -302,10 +302,10 @@ TEST_F(FemMpi, TwoRanksGiveTheOneRankRCurve3D) {
   // the 10 mm arms, indicator 0.012, and a 3D Q2 run on 2 oversubscribed ranks takes minutes).
   prm.degree = 1;
   prm.steady_state_window = 8 * mm;
-  const auto r1 =
-      fem::simulate_dcb_distributed(spec, law::Material(), law, 200, prm, "", {}, MPI_COMM_SELF);
-  const auto r2 =
-      fem::simulate_dcb_distributed(spec, law::Material(), law, 200, prm, "", {}, MPI_COMM_WORLD);
+  const auto r1 = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
+                                                MPI_COMM_SELF);
+  const auto r2 = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
+                                                MPI_COMM_WORLD);
   print("3D, 2 ranks", r2);
   ASSERT_GE(r1.rcurve.size(), 5u);
   const double diff = max_rel_diff(r1, r2);

@@ -30,7 +30,7 @@ using fem_test::short_dcb;
 
 namespace {
 
-void print(const law::SimulationResult& r) {
+void print(const result::SimulationResult& r) {
   std::cout << "  a_mm root_mm delta_root_mm load_N J_tip J_ff R_J R_eq2 R_energy\n";
   for (const auto& p : r.rcurve)
     std::cout << "  " << p.a / mm << " " << p.root / mm << " " << p.delta_root / mm << " " << p.load
@@ -105,7 +105,7 @@ TEST(CohesiveInterface, InsertionIsFresh) {
 // (2) LEFM limit: load during propagation against corrected beam theory, R = J_tip.
 TEST(FemDcb, LefmFollowsCorrectedBeamTheory) {
   const auto spec = short_dcb();
-  const law::Material wood;
+  const specimen::Material wood;
   const double j_tip = 200;
   fem::FemParameters prm;
   prm.element_size = 1 * mm;
@@ -114,13 +114,13 @@ TEST(FemDcb, LefmFollowsCorrectedBeamTheory) {
   print(r);
   ASSERT_GE(r.rcurve.size(), 8u);
   EXPECT_TRUE(r.reached_steady_state);
-  const double chi_h = law::cbt_chi(wood) * spec.arm_thickness();
+  const double chi_h = specimen::cbt_chi(wood) * spec.arm_thickness();
   for (const auto& p : r.rcurve) {
     // CBT is itself an approximation of 2D orthotropic elasticity, good to about 2 % for fine
     // meshes (docs/design.md section 3, "Reference formulas"); on this mesh the difference measured
     // 0.6 %. 1.5 % fails for a wrong stiffness, a wrong tip criterion (P ~ sqrt(J)) or a wrong load
     // line.
-    EXPECT_NEAR(p.load / law::cbt_load_at_crack_length(spec, wood, j_tip, p.a), 1.0, 0.015)
+    EXPECT_NEAR(p.load / specimen::cbt_load_at_crack_length(spec, wood, j_tip, p.a), 1.0, 0.015)
         << "a = " << p.a / mm << " mm";
     // Tip J is the criterion (within its tolerance); the far-field J measures the same
     // energy release rate on another domain: path independence, measured 0.07 %.
@@ -143,7 +143,7 @@ TEST(FemDcb, LefmFollowsCorrectedBeamTheory) {
 // composite 3-point Lobatto rule, the mid-side node released with its segment).
 TEST(FemDcb, LefmQuadraticElements) {
   const auto spec = short_dcb();
-  const law::Material wood;
+  const specimen::Material wood;
   fem::FemParameters prm;
   prm.degree = 2;
   prm.element_size = 2 * mm;
@@ -154,7 +154,7 @@ TEST(FemDcb, LefmQuadraticElements) {
   ASSERT_GE(r.rcurve.size(), 4u);
   for (const auto& p : r.rcurve) {
     // Same CBT budget as for Q1 (measured here: within 1 %).
-    EXPECT_NEAR(p.load / law::cbt_load_at_crack_length(spec, wood, 200, p.a), 1.0, 0.015);
+    EXPECT_NEAR(p.load / specimen::cbt_load_at_crack_length(spec, wood, 200, p.a), 1.0, 0.015);
     EXPECT_NEAR(p.R_J / 200, 1.0, 0.005);
   }
 }
@@ -162,8 +162,8 @@ TEST(FemDcb, LefmQuadraticElements) {
 namespace {
 /// One linear-softening run shared by the tests below (about a second).
 struct LinearSofteningRun {
-  law::Specimen spec = short_dcb();
-  law::Material wood;
+  specimen::Specimen spec = short_dcb();
+  specimen::Material wood;
   double j_tip = 200;
   // sigma_c 1 MPa, delta_c 0.4 mm: area 200 J/m^2, a zone of ~15 elements that fits in the
   // short specimen. Rigid at zero opening: regularized here with an elastic rise to 10 % of
@@ -175,7 +175,7 @@ struct LinearSofteningRun {
       law::make_linear_softening(1000 * kPa, 0.4 * mm).with_elastic_rise(0.04 * mm);
   fem::FemParameters prm;
   fem::FemRunDetails details;
-  law::SimulationResult result;
+  result::SimulationResult result;
   LinearSofteningRun() {
     prm.element_size = 1 * mm;
     prm.steady_state_window = 8 * mm;
@@ -277,12 +277,13 @@ TEST(FemDcb, EnergyBalanceCloses) {
 TEST(FemDcb, OutputsAndLigamentDiagnosis) {
   const auto dir = std::filesystem::temp_directory_path() / "fiberbridge_fem_test_output";
   std::filesystem::remove_all(dir);
-  law::Specimen spec = short_dcb();
+  specimen::Specimen spec = short_dcb();
   spec.length = 0.080; // 40 mm of ligament; the PVA zone needs well over 100 mm
   fem::FemParameters prm;
   prm.element_size = 2 * mm;
   prm.output_every = 5;
-  const auto r = fem::simulate_dcb(spec, law::Material(), pva_control(), 200, prm, dir.string());
+  const auto r =
+      fem::simulate_dcb(spec, specimen::Material(), pva_control(), 200, prm, dir.string());
   EXPECT_FALSE(r.reached_steady_state);
   EXPECT_TRUE(std::isnan(r.G_ss));
   bool diagnosed = false;
@@ -305,16 +306,16 @@ TEST(FemParameters, RejectsBadValues) {
   EXPECT_THROW(prm.validate(), InputError);
   prm = fem::FemParameters();
   prm.element_size = 0;
-  EXPECT_THROW(fem::simulate_dcb(short_dcb(), law::Material(), law::NoBridgingLaw(), 200, prm),
+  EXPECT_THROW(fem::simulate_dcb(short_dcb(), specimen::Material(), law::NoBridgingLaw(), 200, prm),
                InputError);
   prm = fem::FemParameters();
   auto spec = short_dcb();
   spec.initial_crack = 6 * mm; // three 2 mm elements: no room for the far-field J domain
-  EXPECT_THROW(fem::simulate_dcb(spec, law::Material(), law::NoBridgingLaw(), 200, prm),
+  EXPECT_THROW(fem::simulate_dcb(spec, specimen::Material(), law::NoBridgingLaw(), 200, prm),
                InputError);
   spec = short_dcb();
   spec.length = 0.050; // 10 mm of ligament, the J domains ahead of the tip need 18 mm
-  EXPECT_THROW(fem::simulate_dcb(spec, law::Material(), law::NoBridgingLaw(), 200, prm),
+  EXPECT_THROW(fem::simulate_dcb(spec, specimen::Material(), law::NoBridgingLaw(), 200, prm),
                InputError);
 }
 
@@ -333,7 +334,7 @@ TEST(FemDcb, RigidLawIsInsertedExtrinsicallyWithoutALastingError) {
   prm.steady_state_window = 8 * mm;
   const double sc = 1000 * kPa, dc = 0.4 * mm, j_tip = 200;
   const auto law = law::make_linear_softening(sc, dc);
-  const auto r = fem::simulate_dcb(spec, law::Material(), law, j_tip, prm);
+  const auto r = fem::simulate_dcb(spec, specimen::Material(), law, j_tip, prm);
   ASSERT_TRUE(r.reached_steady_state);
   bool noted = false;
   for (const auto& n : r.notes)
@@ -358,11 +359,11 @@ TEST(FemDcb, PlaneStrainReducesToPlaneStressWithoutPoissonCoupling) {
   const auto spec = short_dcb();
   fem::FemParameters prm;
   prm.steady_state_window = 4 * mm;
-  law::Material stress;
-  law::Material strain = stress;
+  specimen::Material stress;
+  specimen::Material strain = stress;
   strain.plane_stress = false;
   const auto r_stress = fem::simulate_dcb(spec, stress, law::NoBridgingLaw(), 200, prm);
-  law::Material uncoupled = strain;
+  specimen::Material uncoupled = strain;
   uncoupled.nu_LR = 0;
   uncoupled.nu_RT = 0;
   const auto r_uncoupled = fem::simulate_dcb(spec, uncoupled, law::NoBridgingLaw(), 200, prm);
@@ -383,7 +384,7 @@ TEST(FemDcb, PlaneStrainReducesToPlaneStressWithoutPoissonCoupling) {
 void expect_diagnosed_failure(fem::FemParameters prm, const std::string& solver_phrase) {
   prm.max_newton_iterations = 1;
   try {
-    fem::simulate_dcb(short_dcb(), law::Material(), pva_control(), 200, prm);
+    fem::simulate_dcb(short_dcb(), specimen::Material(), pva_control(), 200, prm);
     FAIL() << "expected a ComputationError";
   } catch (const ComputationError& e) {
     const std::string what = e.what();
@@ -418,7 +419,7 @@ TEST(FemDcb, KluAndMumpsGiveTheSameRCurve) {
     largest = std::max(largest, std::abs(r.rcurve[i].R_J / k.rcurve[i].R_J - 1));
   }
   std::cout << "  largest relative R_J difference klu - mumps: " << largest << "\n";
-  auto mentions = [](const law::SimulationResult& res, const std::string& what) {
+  auto mentions = [](const result::SimulationResult& res, const std::string& what) {
     for (const auto& n : res.method)
       if (n.find(what) != std::string::npos)
         return true;

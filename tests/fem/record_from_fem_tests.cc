@@ -25,8 +25,8 @@ using namespace fiberbridge::analysis;
 using units::mm;
 
 TEST(RecordFromFem, ReduceRecoversTheFemEnergyRCurve) {
-  const law::Specimen s = thin_dcb_case::specimen();
-  const law::Material m = thin_dcb_case::material();
+  const specimen::Specimen s = thin_dcb_case::specimen();
+  const specimen::Material m = thin_dcb_case::material();
   const law::TrilinearParameters p = thin_dcb_case::bridging();
   fem::FemParameters prm;
   prm.element_size = 1.0 * mm; // 82 advances over 81 mm; Q2 by auto (9.5 s CPU)

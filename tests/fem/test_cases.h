@@ -3,7 +3,7 @@
 // their results can be compared with each other and with the numbers quoted in the comments).
 #include "fiberbridge/law/piecewise_linear_law.h"
 #include "fiberbridge/law/seed_laws.h"
-#include "fiberbridge/law/specimen.h"
+#include "fiberbridge/specimen/specimen.h"
 
 namespace fiberbridge::fem_test {
 
@@ -13,8 +13,8 @@ inline law::PiecewiseLinearLaw pva_control() {
 }
 
 /// A short DCB (120 x 20 x 20 mm, a0 40 mm) that the tests run in about a second.
-inline law::Specimen short_dcb() {
-  law::Specimen s;
+inline specimen::Specimen short_dcb() {
+  specimen::Specimen s;
   s.length = 0.120;
   s.width = 0.020;
   s.height = 0.020;

@@ -23,14 +23,14 @@ using units::mm;
 
 namespace {
 
-bool has_note(const law::SimulationResult& r, const std::string& start) {
+bool has_note(const result::SimulationResult& r, const std::string& start) {
   for (const auto& n : r.notes)
     if (n.rfind(start, 0) == 0)
       return true;
   return false;
 }
 
-void print(const law::SimulationResult& r) {
+void print(const result::SimulationResult& r) {
   std::cout << "  a_mm load_N opening_mm R_J R_eq2\n";
   for (const auto& p : r.rcurve)
     std::cout << "  " << p.a / mm << " " << p.load << " " << p.load_point_opening / mm << " "
@@ -62,13 +62,13 @@ TEST(FemThinArm, MeshFollowsTheArm) {
 
   // The seed's 17.5 mm arms: square 2 mm elements at the crack plane as before (the seed figures
   // of docs/verification.md are measured on this mesh).
-  const law::Specimen seed;
+  const specimen::Specimen seed;
   const auto thick = fem::dcb_mesh_lines(seed, prm);
   EXPECT_DOUBLE_EQ(thick.first_layer, thick.dx);
   EXPECT_NEAR(thick.y[1], 2 * mm, 1e-12);
 
   // 1 mm arms with 2 mm elements and 4 layers: 8 times longer than high. Refused, naming the key.
-  law::Specimen very_thin = thin_dcb_case::specimen();
+  specimen::Specimen very_thin = thin_dcb_case::specimen();
   very_thin.height = 2 * mm;
   try {
     fem::dcb_mesh_lines(very_thin, prm);
@@ -85,7 +85,7 @@ TEST(FemThinArm, MeshFollowsTheArm) {
 TEST(FemThinArm, DegreeFollowsTheArm) {
   fem::FemParameters prm;
   std::vector<std::string> notes;
-  EXPECT_EQ(fem::resolve_degree(law::Specimen(), law::Material(), prm, notes), 1u);
+  EXPECT_EQ(fem::resolve_degree(specimen::Specimen(), specimen::Material(), prm, notes), 1u);
   EXPECT_TRUE(notes.empty());
   EXPECT_EQ(fem::resolve_degree(thin_dcb_case::specimen(), thin_dcb_case::material(), prm, notes),
             2u);
@@ -102,7 +102,7 @@ TEST(FemThinArm, DegreeFollowsTheArm) {
 namespace {
 /// LEFM run of the composite DCB; `window` short so that the run stops a few advances after
 /// initiation (the LEFM R curve is flat from the first advance).
-law::SimulationResult composite_lefm(fem::FemParameters prm, double j_tip = kCompositeJtip) {
+result::SimulationResult composite_lefm(fem::FemParameters prm, double j_tip = kCompositeJtip) {
   return fem::simulate_dcb(thin_dcb_case::specimen(), thin_dcb_case::material(),
                            law::NoBridgingLaw(), j_tip, prm);
 }
@@ -124,7 +124,8 @@ TEST(FemThinArm, LefmCompositeFollowsCbtOnDefaults) {
   const auto spec = thin_dcb_case::specimen();
   const auto mat = thin_dcb_case::material();
   for (const auto& p : r.rcurve) {
-    EXPECT_NEAR(p.load / law::cbt_load_at_crack_length(spec, mat, kCompositeJtip, p.a), 1.0, 0.01)
+    EXPECT_NEAR(p.load / specimen::cbt_load_at_crack_length(spec, mat, kCompositeJtip, p.a), 1.0,
+                0.01)
         << "a = " << p.a / mm << " mm";
     // R_J is the far-field J: path independence on this mesh within the 0.5 % of the thick-arm
     // LEFM test (FemDcb.LefmFollowsCorrectedBeamTheory).
@@ -139,18 +140,18 @@ TEST(FemThinArm, LefmCompositeFollowsCbtOnDefaults) {
 // issue's 1 %: the Eq. 2 check needs only the law, Eq. 1 and a converged far-field J; the
 // measured figures are in docs/verification.md ("Thin arms").
 TEST(FemThinArm, EpiBridgingOnThreeMillimetreArms) {
-  law::Specimen spec;
+  specimen::Specimen spec;
   spec.height = 6 * mm;
   const auto epi = law::make_trilinear(law::seed_control_law("EPI"));
   const double j_tip = 200;
-  const auto r = fem::simulate_dcb(spec, law::Material(), epi, j_tip, fem::FemParameters());
+  const auto r = fem::simulate_dcb(spec, specimen::Material(), epi, j_tip, fem::FemParameters());
   print(r);
   ASSERT_TRUE(r.reached_steady_state);
   const double G = j_tip + epi.area();
   EXPECT_NEAR(r.G_ss / G, 1.0, 0.01);
   for (const auto& p : r.rcurve)
     EXPECT_NEAR(p.R_J / p.R_eq2, 1.0, 0.01) << "a = " << p.a / mm << " mm";
-  EXPECT_LT(law::rdelta_error_vs_eq2(r, epi, j_tip), 0.01);
+  EXPECT_LT(result::rdelta_error_vs_eq2(r, epi, j_tip), 0.01);
   // A bridging zone of tens of mm on 2 mm elements is resolved: no resolution note.
   EXPECT_FALSE(has_note(r, "resolution: the cohesive zone is at most"));
 }
@@ -188,9 +189,9 @@ TEST(FemThinArm, RefinedCompositeConvergesWithBothSolvers) {
   const auto spec = thin_dcb_case::specimen();
   const auto& p = newton.rcurve.front();
   // Closer to CBT than the default 2 mm (the ladder of docs/verification.md): 0.5 %.
-  EXPECT_NEAR(
-      p.load / law::cbt_load_at_crack_length(spec, thin_dcb_case::material(), kCompositeJtip, p.a),
-      1.0, 0.005);
+  EXPECT_NEAR(p.load / specimen::cbt_load_at_crack_length(spec, thin_dcb_case::material(),
+                                                          kCompositeJtip, p.a),
+              1.0, 0.005);
 }
 
 // A short refinement ladder (Q2 at 2, 1 and 0.5 mm on the composite): the initiation load
@@ -232,8 +233,8 @@ TEST(FemThinArm, StrongShortLawGivesItsWholeRCurve) {
   const double j_tip = 100, G = j_tip + law.area();
   ASSERT_NEAR(law.area(), 500, 1e-9);
   for (const bool thin : {false, true}) {
-    const law::Specimen spec = thin ? thin_dcb_case::specimen() : law::Specimen();
-    const law::Material mat = thin ? thin_dcb_case::material() : law::Material();
+    const specimen::Specimen spec = thin ? thin_dcb_case::specimen() : specimen::Specimen();
+    const specimen::Material mat = thin ? thin_dcb_case::material() : specimen::Material();
     const auto r = fem::simulate_dcb(spec, mat, law, j_tip, fem::FemParameters());
     print(r);
     ASSERT_TRUE(r.reached_steady_state) << (thin ? "composite" : "seed specimen");

@@ -107,9 +107,9 @@ TEST(Identify, ModulusFromComplianceInvertsCbt) {
   auto s = record_specimen();
   const auto m = record_material(19.3e9);
   const double c = 0.037 * mm; // DCB-01's initial compliance, m/N
-  law::Material cal = m;
+  specimen::Material cal = m;
   cal.E_L = modulus_for_compliance(s, m, c);
-  EXPECT_NEAR(law::cbt_opening(s, cal, 1.0, s.initial_crack) / c, 1.0, 1e-9);
+  EXPECT_NEAR(specimen::cbt_opening(s, cal, 1.0, s.initial_crack) / c, 1.0, 1e-9);
   const auto law = law::make_trilinear({0.05 * mm, 700e3, 1.5 * mm, 100e3, 4 * mm});
   beam::BeamParameters bp;
   bp.final_crack_length = s.initial_crack + 2 * mm;
@@ -128,15 +128,15 @@ TEST(Identify, LargeDisplacementMappingMatchesTheElastica) {
   // measured worst 0.03 %; 0.5 % bounds it with room for other loadings, and the unmapped
   // linear states are 3.0 % off at delta/a = 0.44 (checked to be out of the bound).
   const double B = 25 * mm, h = 2.7 * mm, E = 19.3e9, EI = E * B * h * h * h / 12, R = 1000;
-  law::SimulationResult run;
+  result::SimulationResult run;
   for (double a = 40 * mm; a <= 120 * mm + 1e-9; a += 5 * mm) {
-    law::RCurvePoint p;
+    result::RCurvePoint p;
     p.a = a;
     p.load = std::sqrt(R * B * EI) / a; // linear DCB: G = P^2 a^2 / (B EI)
     p.load_point_opening = 2 * p.load * a * a * a / (3 * EI);
     run.rcurve.push_back(p);
   }
-  const law::SimulationResult linear = run;
+  const result::SimulationResult linear = run;
   with_large_displacements(run, 1e-9);
   double worst = 0, worst_linear = 0, largest = 0;
   for (std::size_t i = 0; i < run.rcurve.size(); ++i) {

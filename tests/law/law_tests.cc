@@ -5,7 +5,7 @@
 #include "fiberbridge/law/law_spec.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
 #include "fiberbridge/law/seed_laws.h"
-#include "fiberbridge/law/specimen.h"
+#include "fiberbridge/specimen/specimen.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +13,7 @@
 
 using namespace fiberbridge;
 using namespace fiberbridge::law;
+using namespace fiberbridge::specimen;
 using units::kPa;
 using units::mm;
 

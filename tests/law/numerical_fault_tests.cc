@@ -1,8 +1,8 @@
-// The two boundaries of the numerical-fault checks (law/numerical_fault.h) on their own: the law
+// The two boundaries of the numerical-fault checks (core/numerical_fault.h) on their own: the law
 // evaluation and the R-curve row of an accepted advance.
 #include "fiberbridge/core/units.h"
-#include "fiberbridge/law/numerical_fault.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
+#include "fiberbridge/result/numerical_fault.h"
 #include "support/nan_past_opening_law.h"
 
 #include <gtest/gtest.h>
@@ -17,13 +17,13 @@ namespace {
 std::string fault_of(const std::function<void()>& f) {
   try {
     f();
-  } catch (const law::NumericalFault& e) {
+  } catch (const fiberbridge::NumericalFault& e) {
     return e.what();
   }
   return "";
 }
-law::RCurvePoint finite_row(double a) {
-  law::RCurvePoint p;
+result::RCurvePoint finite_row(double a) {
+  result::RCurvePoint p;
   p.a = a;
   p.delta_root = 0.05 * mm;
   p.load = 100;
@@ -35,7 +35,7 @@ law::RCurvePoint finite_row(double a) {
 TEST(LawNumericalFault, RespondRejectsNonFiniteOpeningAndTraction) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const auto law = law::make_linear_softening(1000 * units::kPa, 0.4 * mm);
-  law::begin_fault_context("unit");
+  fiberbridge::begin_fault_context("unit");
   // A NaN opening used to fall through to the secant branch and return a NaN traction.
   EXPECT_NE(fault_of([&] { law.respond(nan, 0.1 * mm, 1e12); })
                 .find("unit, step 1 (before the "
@@ -54,17 +54,17 @@ TEST(LawNumericalFault, RespondRejectsNonFiniteOpeningAndTraction) {
 }
 
 TEST(LawNumericalFault, RCurveRowNamesTheColumnAndCountsTheSteps) {
-  law::begin_fault_context("unit");
-  law::check_rcurve_point(finite_row(0.101));
-  law::check_rcurve_point(finite_row(0.102)); // NaN = "not available" in optional columns: fine
+  fiberbridge::begin_fault_context("unit");
+  result::check_rcurve_point(finite_row(0.101));
+  result::check_rcurve_point(finite_row(0.102)); // NaN = "not available" in optional columns: fine
   auto bad = finite_row(0.103);
   bad.load = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_NE(fault_of([&] { law::check_rcurve_point(bad); })
+  EXPECT_NE(fault_of([&] { result::check_rcurve_point(bad); })
                 .find("unit, step 3 (after tip advance 2, a = 102 mm): R-curve row column load_N "
                       "is nan"),
             std::string::npos);
   bad = finite_row(0.103);
   bad.R_J = -std::numeric_limits<double>::infinity();
-  EXPECT_NE(fault_of([&] { law::check_rcurve_point(bad); }).find("column R_J_J_m2 is -inf"),
+  EXPECT_NE(fault_of([&] { result::check_rcurve_point(bad); }).find("column R_J_J_m2 is -inf"),
             std::string::npos);
 }

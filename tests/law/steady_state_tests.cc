@@ -1,6 +1,6 @@
-// Unit tests of the shared R-curve post-processing (include/fiberbridge/law/steady_state.h):
+// Unit tests of the shared R-curve post-processing (include/fiberbridge/result/steady_state.h):
 // R_energy over the neighbouring advances and the one steady-state rule of every model.
-#include "fiberbridge/law/steady_state.h"
+#include "fiberbridge/result/steady_state.h"
 
 #include <gtest/gtest.h>
 
@@ -9,6 +9,7 @@
 
 using namespace fiberbridge;
 using namespace fiberbridge::law;
+using namespace fiberbridge::result;
 
 namespace {
 constexpr double mm = 1e-3, B = 0.035, a0 = 0.1;

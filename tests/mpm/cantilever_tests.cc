@@ -1,8 +1,8 @@
 // Elastic sanity of the explicit MPM core without a crack: a clamped cantilever's static tip
 // deflection under a slowly applied tip load, and its first free-vibration period, against beam
 // theory (Timoshenko deflection, Euler-Bernoulli period).
-#include "fiberbridge/law/specimen.h"
 #include "fiberbridge/mpm/explicit_solver.h"
+#include "fiberbridge/specimen/specimen.h"
 
 #include <gtest/gtest.h>
 
@@ -17,8 +17,8 @@ namespace {
 
 // Isotropic material: the beam formulas then need no orthotropic shear corrections beyond
 // Timoshenko's.
-law::Material isotropic() {
-  law::Material m;
+specimen::Material isotropic() {
+  specimen::Material m;
   m.E_L = m.E_T = 10e9;
   m.nu_LT = 0.3;
   m.G_LT = m.E_L / (2 * (1 + m.nu_LT));
@@ -28,11 +28,11 @@ law::Material isotropic() {
 
 struct Cantilever {
   double L = 0.080, t = 0.010, B = 0.020, cell = 2.5e-3;
-  law::Material m = isotropic();
+  specimen::Material m = isotropic();
   std::unique_ptr<ExplicitSolver> solver;
   std::vector<int> tip_particles;
 
-  explicit Cantilever(double beta, const law::Material& material = isotropic(),
+  explicit Cantilever(double beta, const specimen::Material& material = isotropic(),
                       double cell_size = 2.5e-3)
       : cell(cell_size), m(material) {
     const int ppc = 2;
@@ -74,7 +74,7 @@ struct Cantilever {
   /// Timoshenko tip deflection under P with the bending modulus 1/s11 of the 2D model (E_L in
   /// plane stress, larger in plane strain) and the shear modulus G_LT.
   double timoshenko(double P) const {
-    const double E = 1 / law::in_plane_compliance(m).s11, kappa = 5.0 / 6;
+    const double E = 1 / specimen::in_plane_compliance(m).s11, kappa = 5.0 / 6;
     return P * std::pow(L, 3) / (3 * E * I()) + P * L / (kappa * m.G_LT * B * t);
   }
   /// Applies P over 3 periods (smooth ramp), holds 2 periods and returns the tip deflection
@@ -181,7 +181,7 @@ TEST(MpmCantilever, FreeVibrationPeriodMatchesBeamTheory) {
 // ratio of the two Timoshenko deflections cancels the discretization's own stiffness (2.8 %):
 // 0.5 % catches a reduction applied twice or not at all (9 %) and the wrong radial constants.
 TEST(MpmCantilever, PlaneStrainStiffensBendingByTheReducedCompliance) {
-  law::Material strain = isotropic();
+  specimen::Material strain = isotropic();
   strain.plane_stress = false;
   strain.E_R_over_E_L = 1;
   strain.nu_LR = strain.nu_RT = strain.nu_LT;

@@ -24,8 +24,8 @@ namespace {
 
 // The small specimen of dcb_tests.cc (4 cells through each 10 mm arm), stopped after 20 mm of
 // growth: 7 advances of a linear-softening zone, about 5 s.
-law::Specimen small_specimen() {
-  law::Specimen s;
+specimen::Specimen small_specimen() {
+  specimen::Specimen s;
   s.length = 0.120;
   s.height = 0.020;
   s.initial_crack = 0.040;
@@ -67,13 +67,13 @@ struct Interrupted : std::runtime_error {
 } // namespace
 
 TEST(MpmCheckpoint, ResumedRunMatchesTheUninterruptedOneBitForBit) {
-  const law::Specimen s = small_specimen();
-  const law::Material m;
+  const specimen::Specimen s = small_specimen();
+  const specimen::Material m;
   const auto law = law::make_linear_softening(1e6, 0.2e-3);
   const fs::path ref_dir = fresh_dir("reference"), dir = fresh_dir("interrupted");
 
   DcbModel reference(s, m, law, 200, short_run(), ref_dir.string());
-  const law::SimulationResult r1 = reference.run();
+  const result::SimulationResult r1 = reference.run();
   ASSERT_GE(r1.rcurve.size(), 6u);
 
   // Checkpoints every 20 ms (many per second of this run); the run is stopped at the fourth
@@ -92,14 +92,14 @@ TEST(MpmCheckpoint, ResumedRunMatchesTheUninterruptedOneBitForBit) {
   std::vector<std::string> lines;
   DcbModel resumed(s, m, law, 200, p, dir.string(),
                    [&](const std::string& l) { lines.push_back(l); });
-  const law::SimulationResult r2 = resumed.run();
+  const result::SimulationResult r2 = resumed.run();
   ASSERT_FALSE(lines.empty());
   EXPECT_NE(lines.front().find("resumed from the checkpoint"), std::string::npos) << lines.front();
 
   EXPECT_EQ(resumed.solver().steps(), reference.solver().steps());
   ASSERT_EQ(r2.rcurve.size(), r1.rcurve.size());
   for (std::size_t i = 0; i < r1.rcurve.size(); ++i)
-    EXPECT_EQ(std::memcmp(&r1.rcurve[i], &r2.rcurve[i], sizeof(law::RCurvePoint)), 0)
+    EXPECT_EQ(std::memcmp(&r1.rcurve[i], &r2.rcurve[i], sizeof(result::RCurvePoint)), 0)
         << "R-curve row " << i << ": a " << r1.rcurve[i].a << " / " << r2.rcurve[i].a << ", R_J "
         << r1.rcurve[i].R_J << " / " << r2.rcurve[i].R_J;
   EXPECT_EQ(std::memcmp(&r1.G_ss, &r2.G_ss, sizeof(double)), 0) << r1.G_ss << " / " << r2.G_ss;
@@ -120,8 +120,8 @@ TEST(MpmCheckpoint, ResumedRunMatchesTheUninterruptedOneBitForBit) {
 }
 
 TEST(MpmCheckpoint, RefusesACheckpointOfOtherInputsOrADamagedOne) {
-  const law::Specimen s = small_specimen();
-  const law::Material m;
+  const specimen::Specimen s = small_specimen();
+  const specimen::Material m;
   const auto law = law::make_linear_softening(1e6, 0.2e-3);
   const fs::path dir = fresh_dir("refuse");
   MpmParameters p = short_run();

@@ -23,8 +23,8 @@ using namespace fiberbridge::mpm;
 
 namespace {
 
-law::Specimen small_specimen() {
-  law::Specimen s;
+specimen::Specimen small_specimen() {
+  specimen::Specimen s;
   s.length = 0.120;
   s.height = 0.020;
   s.initial_crack = 0.040;
@@ -43,8 +43,8 @@ MpmParameters coarse() {
 } // namespace
 
 TEST(MpmDcb, StationaryCrackJIsPathIndependentAndEnergyBalances) {
-  const law::Specimen s = small_specimen();
-  const law::Material m;
+  const specimen::Specimen s = small_specimen();
+  const specimen::Material m;
   const law::NoBridgingLaw none;
   DcbModel model(s, m, none, 200, coarse());
   const double T = 8 * model.vibration_period();
@@ -72,7 +72,8 @@ TEST(MpmDcb, StationaryCrackJIsPathIndependentAndEnergyBalances) {
   // measured load 3.4 % above CBT at 4 cells per arm (the crack acts 0.3 cell shorter), a
   // first-order discretization error. 5 % bounds that level and catches a wrong modulus or a
   // missing arm (factors of 2 and more).
-  const double P_cbt = model.load_point_opening() / law::cbt_opening(s, m, 1.0, s.initial_crack);
+  const double P_cbt =
+      model.load_point_opening() / specimen::cbt_opening(s, m, 1.0, s.initial_crack);
   EXPECT_NEAR(model.load() / P_cbt, 1.0, 0.05);
   // Quasi-static: the kinetic energy of the moving arms stays far below the strain energy.
   EXPECT_LT(solver.kinetic_energy(), 0.01 * solver.strain_energy());
@@ -91,8 +92,8 @@ TEST(MpmDcb, StationaryCrackJIsPathIndependentAndEnergyBalances) {
 // Asserted: the error falls in magnitude at each level, with an order of at least 0.7 (a scheme
 // that stopped converging, e.g. a load line or tip fixed in cells, gives about 0).
 TEST(MpmDcb, StationaryLoadPointResponseConvergesWithTheCell) {
-  const law::Specimen s = small_specimen();
-  const law::Material m;
+  const specimen::Specimen s = small_specimen();
+  const specimen::Material m;
   const law::NoBridgingLaw none;
   std::vector<double> error;
   for (const double cell : {5e-3, 2.5e-3, 1.25e-3}) {
@@ -102,7 +103,7 @@ TEST(MpmDcb, StationaryLoadPointResponseConvergesWithTheCell) {
     const double T = 8 * model.vibration_period();
     while (model.solver().time() < T)
       ASSERT_TRUE(model.step(false));
-    const double stiffness_cbt = 1 / law::cbt_opening(s, m, 1.0, s.initial_crack);
+    const double stiffness_cbt = 1 / specimen::cbt_opening(s, m, 1.0, s.initial_crack);
     error.push_back(model.load() / model.load_point_opening() / stiffness_cbt - 1);
   }
   const double order = std::log2((error[0] - error[1]) / (error[1] - error[2]));
@@ -119,8 +120,8 @@ TEST(MpmDcb, ParallelParticleLoopsGiveTheSameResponse) {
   // Two threads share the particle chunks and the coloured scatter blocks; the chunks, the
   // blocks and the order their sums are added in do not depend on the threads, so the response
   // is the same to the bit (a tolerance would hide a race).
-  const law::Specimen s = small_specimen();
-  const law::Material m;
+  const specimen::Specimen s = small_specimen();
+  const specimen::Material m;
   const auto law = law::make_linear_softening(1e6, 0.2e-3);
   MpmParameters p = coarse();
   p.threads = 1;
@@ -145,27 +146,27 @@ TEST(MpmDcb, ParallelParticleLoopsGiveTheSameResponse) {
 }
 
 TEST(MpmDcb, RejectsUnusableInput) {
-  law::Specimen s = small_specimen();
+  specimen::Specimen s = small_specimen();
   const law::NoBridgingLaw none;
   MpmParameters p = coarse();
   p.cell_size = 6e-3; // fewer than 2 cells through a 10 mm arm
-  EXPECT_THROW(DcbModel(s, law::Material{}, none, 200, p), InputError);
+  EXPECT_THROW(DcbModel(s, specimen::Material{}, none, 200, p), InputError);
   p = coarse();
   p.cfl = 1.5;
-  EXPECT_THROW(DcbModel(s, law::Material{}, none, 200, p), InputError);
-  EXPECT_THROW(DcbModel(s, law::Material{}, none, -1, coarse()), InputError);
+  EXPECT_THROW(DcbModel(s, specimen::Material{}, none, 200, p), InputError);
+  EXPECT_THROW(DcbModel(s, specimen::Material{}, none, -1, coarse()), InputError);
 }
 
 TEST(MpmDcb, NotesArmsWithFewerThanThreeCellsThroughTheThickness) {
   // 4 mm cells on a 10 mm arm: 2.5 cells, accepted (>= 2) but noted (under 3 the arm bends over
   // 5 % too stiff, MpmCantilever.BendingNeedsCellsThroughTheThickness); 2.5 mm cells: 4, quiet.
-  const law::Specimen s = small_specimen();
+  const specimen::Specimen s = small_specimen();
   const law::NoBridgingLaw none;
   auto thin_arm_noted = [&](double cell) {
     MpmParameters p = coarse();
     p.cell_size = cell;
     p.max_steps = 3; // the note is made at setup; no need to load
-    DcbModel model(s, law::Material{}, none, 200, p);
+    DcbModel model(s, specimen::Material{}, none, 200, p);
     const auto r = model.run();
     return std::any_of(r.notes.begin(), r.notes.end(), [](const std::string& n) {
       return n.find("thin arm: MPM/Cell size") != std::string::npos;
@@ -191,10 +192,10 @@ MpmParameters quasi_static() {
 
 /// One propagation run per law, shared by the tests that read it (each run takes seconds).
 struct PropagationRun {
-  law::Specimen specimen = small_specimen();
-  law::Material material;
+  specimen::Specimen specimen = small_specimen();
+  specimen::Material material;
   std::unique_ptr<law::TractionLaw> law;
-  law::SimulationResult result;
+  result::SimulationResult result;
   PropagationRun(std::unique_ptr<law::TractionLaw> l) : law(std::move(l)) {
     result = simulate_dcb(specimen, material, *law, 200, quasi_static(), "");
   }
@@ -217,7 +218,7 @@ double mean(const std::vector<double>& v) {
   double s = 0;
   for (double x : v)
     s += x;
-  return v.empty() ? law::not_available : s / v.size();
+  return v.empty() ? result::not_available : s / v.size();
 }
 
 } // namespace
@@ -229,8 +230,9 @@ namespace {
 // f = (1/C(a) - 1/C(a + da)) C(a)^2 / (da C'(a)) with the corrected-beam-theory compliance C
 // (about 1 - 2 da/(a + chi h)). A discrete tip that advances when G reaches J_tip releases this,
 // not J_tip: the finite-step error that vanishes with da.
-double step_release_fraction(const law::Specimen& s, const law::Material& m, double a, double da) {
-  auto C = [&](double x) { return law::cbt_opening(s, m, 1.0, x); };
+double step_release_fraction(const specimen::Specimen& s, const specimen::Material& m, double a,
+                             double da) {
+  auto C = [&](double x) { return specimen::cbt_opening(s, m, 1.0, x); };
   const double h = 1e-6;
   const double dC = (C(a + h) - C(a - h)) / (2 * h);
   return (1 / C(a) - 1 / C(a + da)) * C(a) * C(a) / (da * dC);
@@ -268,8 +270,8 @@ TEST(MpmDcbPropagation, LefmGrowthCriterionStabilityAndEnergyRelease) {
     // Load and J_ff are measured on the state that triggered the advance, i.e. at the crack
     // length before it (p.a is the new tip).
     const double a_before = p.a - da;
-    load_ratio.push_back(p.load /
-                         law::cbt_load_at_crack_length(run.specimen, run.material, J, a_before));
+    load_ratio.push_back(
+        p.load / specimen::cbt_load_at_crack_length(run.specimen, run.material, J, a_before));
     jff.push_back(p.J_ff / J);
     ren.push_back(p.R_energy / J);
     ren_expected.push_back(step_release_fraction(run.specimen, run.material, a_before, da));

@@ -1,4 +1,4 @@
-// Numerical faults in the MPM (law/numerical_fault.h): a law that turns NaN past 0.1 mm
+// Numerical faults in the MPM (core/numerical_fault.h): a law that turns NaN past 0.1 mm
 // ends the run with the model, the step and the quantity named.
 #include "fiberbridge/mpm/dcb.h"
 #include "support/nan_past_opening_law.h"
@@ -12,7 +12,7 @@ TEST(MpmNumericalFault, NanFromTheLawStopsTheRunNamingModelStepAndQuantity) {
   test::expect_nan_diagnosis("mpm", [&] {
     // The small specimen and coarse cells of dcb_tests.cc: the zone opens past 0.1 mm within
     // the first advances.
-    law::Specimen s;
+    specimen::Specimen s;
     s.length = 0.120;
     s.height = 0.020;
     s.initial_crack = 0.040;
@@ -21,6 +21,6 @@ TEST(MpmNumericalFault, NanFromTheLawStopsTheRunNamingModelStepAndQuantity) {
     p.cell_size = 2.5e-3;
     p.loading_periods = 8;
     p.vtu_every_advances = 0;
-    mpm::simulate_dcb(s, law::Material{}, law, 200, p, "");
+    mpm::simulate_dcb(s, specimen::Material{}, law, 200, p, "");
   });
 }

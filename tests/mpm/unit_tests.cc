@@ -55,7 +55,7 @@ TEST(MpmShape, UgimpGradientMatchesFiniteDifference) {
 }
 
 TEST(MpmElastic, PlaneStressAndStrainOrthotropicCompliance) {
-  law::Material m;
+  specimen::Material m;
   OrthotropicElastic e(m);
   // Uniaxial stress along L: strain (1/E_L, -nu_LT/E_L) must give stress (1, 0).
   const double eps[3] = {1 / m.E_L, -m.nu_LT / m.E_L, 0};
@@ -70,9 +70,9 @@ TEST(MpmElastic, PlaneStressAndStrainOrthotropicCompliance) {
   const double gam[3] = {0, 0, 0.5 / m.G_LT};
   e.stress(gam, s);
   EXPECT_NEAR(s[2], 1.0, 1e-12);
-  // Plane strain: the reduced compliance (law::in_plane_compliance, the FEM's) inverted.
+  // Plane strain: the reduced compliance (specimen::in_plane_compliance, the FEM's) inverted.
   m.plane_stress = false;
-  const law::InPlaneCompliance c = law::in_plane_compliance(m);
+  const specimen::InPlaneCompliance c = specimen::in_plane_compliance(m);
   EXPECT_LT(c.s11, 1 / m.E_L); // eps_zz = 0 stiffens
   OrthotropicElastic strain(m);
   const double eps_pe[3] = {c.s11, c.s12, 0};

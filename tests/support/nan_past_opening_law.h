@@ -1,12 +1,12 @@
 #pragma once
-// Test-only traction law for the numerical-fault tests (law/numerical_fault.h): linear softening
+// Test-only traction law for the numerical-fault tests (core/numerical_fault.h): linear softening
 // (1 MPa, delta_c 0.4 mm, elastic rise to 0.04 mm, the law the model tests already run) whose
 // envelope turns NaN past `nan_from`, as a broken tabulated law or a model bug would. Every model
 // reaches that opening early in a propagation run, so each one must stop with the diagnosis.
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
 
-#include "fiberbridge/law/numerical_fault.h"
+#include "fiberbridge/result/numerical_fault.h"
 
 #include <gtest/gtest.h>
 
@@ -38,13 +38,13 @@ private:
                                       .with_elastic_rise(0.04 * units::mm);
 };
 
-/// Runs a simulation of `model` on the NaN law: it must end in law::NumericalFault naming the
-/// model, the step, the law's traction and the NaN.
+/// Runs a simulation of `model` on the NaN law: it must end in fiberbridge::NumericalFault naming
+/// the model, the step, the law's traction and the NaN.
 inline void expect_nan_diagnosis(const std::string& model, const std::function<void()>& run) {
   try {
     run();
     ADD_FAILURE() << model << " ran through a NaN traction";
-  } catch (const law::NumericalFault& e) {
+  } catch (const fiberbridge::NumericalFault& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find(model + ", step "), std::string::npos) << what;
     EXPECT_NE(what.find("traction of the nan-past-opening law"), std::string::npos) << what;

@@ -1,11 +1,11 @@
 #pragma once
 // Comparing simulations with each other and closing the loop through the extraction method
-// (docs/design.md section 3): analysis of law::SimulationResult, whichever model produced it, so
+// (docs/design.md section 3): analysis of result::SimulationResult, whichever model produced it, so
 // plain functions that are tested without running a model (tests/analysis/
 // model_comparison_tests.cc). The scene item `compare` (app/item_compare.cc) writes them out.
 #include "fiberbridge/analysis/inverse.h"
-#include "fiberbridge/law/rcurve.h"
 #include "fiberbridge/law/traction_law.h"
+#include "fiberbridge/result/rcurve.h"
 
 #include <string>
 #include <vector>
@@ -22,8 +22,8 @@ struct PairwiseDifference {
   int n_points = 0;              ///< points of a's curve in the compared range
 };
 
-std::vector<PairwiseDifference> compare_models(const law::SimulationResult& a,
-                                               const law::SimulationResult& b);
+std::vector<PairwiseDifference> compare_models(const result::SimulationResult& a,
+                                               const result::SimulationResult& b);
 
 /// One recovered law of the closed loop (input law -> simulated R(delta_root) -> extraction).
 struct ClosedLoopRow {
@@ -41,7 +41,7 @@ struct ClosedLoopRow {
 /// start of the plateau), extracts with Eq. 6 and dR/ddelta on n intervals up to the input law's
 /// delta_c with half-width k, and compares with the input law. Throws ComputationError when the
 /// simulation has fewer than n/4 distinct delta_root values below delta_c (too coarse to say).
-std::vector<ClosedLoopRow> closed_loop(const law::SimulationResult& r, const law::TractionLaw& law,
-                                       double j_tip, int n, int k);
+std::vector<ClosedLoopRow> closed_loop(const result::SimulationResult& r,
+                                       const law::TractionLaw& law, double j_tip, int n, int k);
 
 } // namespace fiberbridge::analysis

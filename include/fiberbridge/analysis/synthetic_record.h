@@ -3,7 +3,7 @@
 // machine would have written had it tested the simulated specimen. They exercise `reduce` and
 // `identify` against a known answer (docs/verification.md, "Test records").
 #include "fiberbridge/analysis/test_record.h"
-#include "fiberbridge/law/rcurve.h"
+#include "fiberbridge/result/rcurve.h"
 
 #include <string>
 #include <vector>
@@ -40,7 +40,7 @@ struct SyntheticRecordOptions {
 /// `seed`: reproducible. Throws InputError when the rows' load-point opening does not increase
 /// (snap-back cannot be sampled at constant crosshead rate), there are fewer than 2 rows, or an
 /// option is not positive where it must be.
-TestRecord make_synthetic_record(const law::SimulationResult& result,
+TestRecord make_synthetic_record(const result::SimulationResult& result,
                                  const SyntheticRecordOptions& options, const std::string& name);
 
 /// Writes `r` as CSV with columns time_s, opening_mm, load_N, a_mm (and delta_root_mm when
@@ -49,7 +49,7 @@ void write_test_record_csv(const std::string& path, const TestRecord& r,
                            const std::vector<std::string>& comment_lines);
 
 /// Comment lines describing `options` and the simulation for write_test_record_csv().
-std::vector<std::string> describe_synthetic_record(const law::SimulationResult& result,
+std::vector<std::string> describe_synthetic_record(const result::SimulationResult& result,
                                                    const SyntheticRecordOptions& options);
 
 } // namespace fiberbridge::analysis

@@ -4,9 +4,9 @@
 // earlier items handed on (the fitted law, simulation results for compare).
 #include "fiberbridge/core/summary.h"
 #include "fiberbridge/law/law_spec.h"
-#include "fiberbridge/law/rcurve.h"
-#include "fiberbridge/law/specimen.h"
 #include "fiberbridge/law/traction_law.h"
+#include "fiberbridge/result/rcurve.h"
+#include "fiberbridge/specimen/specimen.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -45,11 +45,11 @@ struct SceneContext {
   /// What `identify` found; it also sets fitted_law/fitted_j_tip and the effective specimen
   /// (first record's a0) and material (its calibrated E_L) that specimen()/material() return.
   std::shared_ptr<const identify::Identification> identification;
-  std::optional<law::Specimen> identified_specimen;
-  std::optional<law::Material> identified_material;
+  std::optional<specimen::Specimen> identified_specimen;
+  std::optional<specimen::Material> identified_material;
 
   /// Results of the simulations that ran, by model name ("fem", "mpm", "beam"), for compare.
-  std::map<std::string, law::SimulationResult> results;
+  std::map<std::string, result::SimulationResult> results;
 
   /// The items the scene runs: the checks before the first item (check_scene) decide from it
   /// which sections will be used (the law section only when neither fit nor identify runs).
@@ -63,8 +63,8 @@ struct SceneContext {
   /// The law and J_tip a simulation uses (fit's output, else the Cohesive law section).
   law::TractionLawPtr law();
   double j_tip();
-  law::Specimen specimen() const; ///< the Specimen section (defaults: the seed's DCB)
-  law::Material material() const; ///< the Material section (defaults: Douglas-fir)
+  specimen::Specimen specimen() const; ///< the Specimen section (defaults: the seed's DCB)
+  specimen::Material material() const; ///< the Material section (defaults: Douglas-fir)
   /// Path inside the output directory.
   std::string out(const std::string& file) const { return output_dir + "/" + file; }
 
@@ -94,7 +94,7 @@ const std::vector<SceneItem>& scene_items();
 /// Common writer for a simulation item: rcurve_<model>.csv, the summary block (docs/design.md
 /// section 5: G_ss_J_m2, wall_time_s, n_dofs or n_particles, rdelta_rel_error_vs_eq2, notes) and an
 /// R(a) PNG. Every simulation item calls this once with its result.
-void report_simulation(SceneContext& ctx, law::SimulationResult result,
+void report_simulation(SceneContext& ctx, result::SimulationResult result,
                        const std::string& size_key /* "n_dofs" or "n_particles" or "n_elements" */);
 
 } // namespace fiberbridge::app

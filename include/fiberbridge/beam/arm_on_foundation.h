@@ -8,7 +8,7 @@
 // the section rotation (theta = w' without shear). Section resultants follow the Lagrangian
 // e = EI theta'^2/2 + S (w' - theta)^2/2 + interface energy: M = EI theta', Q = S (w' - theta),
 // with M' + Q = 0 in an unloaded span.
-#include "fiberbridge/law/specimen.h"
+#include "fiberbridge/specimen/specimen.h"
 
 namespace fiberbridge::beam {
 
@@ -25,10 +25,10 @@ struct ArmConstants {
 };
 
 /// Bending modulus used for the arms: E_L in plane stress, E_L/(1 - nu_LT nu_TL) in plane strain.
-double arm_bending_modulus(const law::Material& m);
+double arm_bending_modulus(const specimen::Material& m);
 
 /// EI and S of one arm for `kappa` (5/6 for a rectangular section) and foundation modulus k.
-ArmConstants arm_constants(const law::Specimen& s, const law::Material& m, double kappa,
+ArmConstants arm_constants(const specimen::Specimen& s, const specimen::Material& m, double kappa,
                            double foundation_modulus);
 
 /// End flexibilities of a semi-infinite Timoshenko beam on a Winkler foundation loaded at its
@@ -46,11 +46,12 @@ EndFlexibility semi_infinite_end_flexibility(const ArmConstants& arm);
 double root_rotation_length(const ArmConstants& arm);
 
 /// The foundation modulus k [Pa/m on the opening] for which the Timoshenko arm on its foundation
-/// has the root rotation of corrected beam theory, c = chi h (law::cbt_chi): then the model's
+/// has the root rotation of corrected beam theory, c = chi h (specimen::cbt_chi): then the model's
 /// compliance matches CBT's 8 (a + chi h)^3/(E B h^3) in its a^3 and a^2 terms. Throws InputError
 /// when no foundation can do it (chi h <= sqrt(EI/S), the rotation a rigid foundation already
 /// gives through shear alone).
-double calibrated_foundation_modulus(const law::Specimen& s, const law::Material& m, double kappa);
+double calibrated_foundation_modulus(const specimen::Specimen& s, const specimen::Material& m,
+                                     double kappa);
 
 /// LEFM limit of the beam model in closed form (semi-infinite ligament): the tip releases
 /// G = k delta_tip^2/2 (the foundation energy per area at the tip), so at G = J_tip the tip

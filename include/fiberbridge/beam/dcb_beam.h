@@ -23,9 +23,9 @@
 // propagation criterion, including snap-back. Where the load-point opening decreases between
 // advances a displacement-controlled test would grow the crack unstably over those advances
 // (several advances in one load step); the result notes where.
-#include "fiberbridge/law/rcurve.h"
-#include "fiberbridge/law/specimen.h"
 #include "fiberbridge/law/traction_law.h"
+#include "fiberbridge/result/rcurve.h"
+#include "fiberbridge/specimen/specimen.h"
 
 #include <functional>
 #include <string>
@@ -44,7 +44,7 @@ struct BeamParameters {
   /// Stop when the ligament ahead of the tip is shorter than this [m]; 0 = the specimen height
   /// (the beam-on-foundation picture needs a ligament longer than the section it bends).
   double minimum_ligament = 0;
-  /// Steady state (the shared rule, law::find_steady_state): after the root moved, R_J stays
+  /// Steady state (the shared rule, result::find_steady_state): after the root moved, R_J stays
   /// within `plateau_tolerance` over at least this much tip growth [m]; G_ss is its mean there.
   double steady_state_window = 10e-3;
   /// Relative spread (max - min over mean) of R_J accepted as a plateau.
@@ -72,11 +72,11 @@ struct BeamParameters {
 /// The checks simulate_dcb makes before it solves anything (specimen, material, parameters, a
 /// ligament longer than the minimum ligament), so that a scene can make them before its first item
 /// runs. Throws InputError naming the section and key.
-void check_dcb_inputs(const law::Specimen& specimen, const law::Material& material,
+void check_dcb_inputs(const specimen::Specimen& specimen, const specimen::Material& material,
                       const BeamParameters& parameters);
 
 /// Runs the crack from the notch (tip and root at a0) until steady state or the ligament runs
-/// out. Steady state: the shared rule (law::find_steady_state): after the root moved, R_J flat
+/// out. Steady state: the shared rule (result::find_steady_state): after the root moved, R_J flat
 /// within `plateau_tolerance` over `steady_state_window` of growth; G_ss is then its mean. If the
 /// ligament runs out first the notes say so; G_ss is then the mean R_J after the root moved (flag
 /// false), or NaN if the root never moved (zone longer than the ligament allows) or the zone is
@@ -88,9 +88,10 @@ void check_dcb_inputs(const law::Specimen& specimen, const law::Material& materi
 ///
 /// Accuracy (seed specimen, 400 elements): second order in the element size throughout; LEFM load
 /// within 0.006 % of CBT, R_J within 0.06 J/m^2 of Eq. 2 for the PVA law, energy balance 3e-5.
-law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
-                                   const law::TractionLaw& law, double j_tip,
-                                   const BeamParameters& parameters,
-                                   const std::function<void(const std::string&)>& progress = {});
+result::SimulationResult simulate_dcb(const specimen::Specimen& specimen,
+                                      const specimen::Material& material,
+                                      const law::TractionLaw& law, double j_tip,
+                                      const BeamParameters& parameters,
+                                      const std::function<void(const std::string&)>& progress = {});
 
 } // namespace fiberbridge::beam

@@ -5,9 +5,9 @@
 // formatting.
 #include "fiberbridge/fem/dcb_simulation.h"
 #include "fiberbridge/law/elastic_rise_law.h"
-#include "fiberbridge/law/specimen.h"
-#include "fiberbridge/law/steady_state.h"
 #include "fiberbridge/law/traction_law.h"
+#include "fiberbridge/result/steady_state.h"
+#include "fiberbridge/specimen/specimen.h"
 
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/numerics/data_postprocessor.h>
@@ -29,11 +29,11 @@ inline double seconds_since(Clock::time_point t0) {
 /// Stiffness of the orthotropic wood with 1 = L along x, 2 = T along y (normal to the crack
 /// plane), 3 = R along z (out of plane in 2D, across the width in 3D).
 /// dim = 2: plane stress, or plane strain through the reduced compliance S_ij - S_i3 S_j3 / S_33.
-/// dim = 3: the full orthotropic solid (E_R, nu_LR, nu_RT from law::Material, G_LR, G_RT from
+/// dim = 3: the full orthotropic solid (E_R, nu_LR, nu_RT from specimen::Material, G_LR, G_RT from
 /// FemParameters; the Material section gives E_L, E_T, G_LT, nu_LT). Throws InputError if not
 /// positive definite.
 template <int dim>
-dealii::SymmetricTensor<4, dim> orthotropic_stiffness(const law::Material& m,
+dealii::SymmetricTensor<4, dim> orthotropic_stiffness(const specimen::Material& m,
                                                       const FemParameters& p);
 
 /// Weight q(x) of the domain J integral: 0 outside [x0, x3], 1 on [x1, x2], linear between.
@@ -64,8 +64,8 @@ struct Ramp {
 
 /// The law the crack segments use: `law` itself, also when it is rigid (sigma(0) > 0: extrinsic
 /// insertion, law/rigid_law.h; a note says so). `holder` stays empty (no elastic rise).
-const law::TractionLaw* insertable_law(const law::TractionLaw& law, const law::Material& material,
-                                       const FemParameters& p,
+const law::TractionLaw* insertable_law(const law::TractionLaw& law,
+                                       const specimen::Material& material, const FemParameters& p,
                                        std::unique_ptr<law::ElasticRiseLaw>& holder,
                                        std::vector<std::string>& notes);
 
@@ -83,7 +83,7 @@ struct DcbMeshLines {
 /// Bound on dx / y1 at the crack plane: 4 admits the default 2 mm elements down to 2 mm arms
 /// with 4 layers (docs/design.md section 2, "FEM", "Mesh that follows the specimen").
 inline constexpr double kMaxCrackPlaneAspect = 4;
-DcbMeshLines dcb_mesh_lines(const law::Specimen& specimen, const FemParameters& p);
+DcbMeshLines dcb_mesh_lines(const specimen::Specimen& specimen, const FemParameters& p);
 
 /// Parasitic-shear indicator of Q1 elements of length `element_length` in an arm of thickness
 /// `arm_thickness`: in pure bending (curvature k) a bilinear element cannot represent
@@ -92,7 +92,7 @@ DcbMeshLines dcb_mesh_lines(const law::Specimen& specimen, const FemParameters& 
 /// Measured on the thin composite arm (docs/verification.md, "Thin arms after the fix"): the Q1
 /// load at fixed J is 1.2 to 1.8 times the indicator too high (kQ1LoadErrorPerIndicator, used in
 /// the note, is a round middle value).
-double q1_bending_indicator(const law::Material& material, double element_length,
+double q1_bending_indicator(const specimen::Material& material, double element_length,
                             double arm_thickness);
 inline constexpr double kQ1LoadErrorPerIndicator = 1.3;
 /// Above this indicator Q1 is not accurate enough (a load error of about 0.5 to 0.7 %): auto
@@ -102,12 +102,13 @@ inline constexpr double kQ1BendingBound = 0.004;
 /// The polynomial degree of the run: FemParameters::degree, or for 0 (auto) Q2 where Q1 would
 /// lock in bending (indicator above kQ1BendingBound) and Q1 elsewhere; notes the choice, and a
 /// forced Q1 past the bound.
-unsigned resolve_degree(const law::Specimen& specimen, const law::Material& material,
+unsigned resolve_degree(const specimen::Specimen& specimen, const specimen::Material& material,
                         const FemParameters& p, std::vector<std::string>& notes);
 
-/// The shared steady-state rule (law::find_steady_state) with FEM/Steady state window and
+/// The shared steady-state rule (result::find_steady_state) with FEM/Steady state window and
 /// FEM/Plateau tolerance; the root has moved once it passes a0 by more than round-off.
-law::SteadyStateRule steady_state_rule(const FemParameters& p, const law::Specimen& specimen);
+result::SteadyStateRule steady_state_rule(const FemParameters& p,
+                                          const specimen::Specimen& specimen);
 
 /// Small strain stops being good enough where the arms rotate far: the beam model's comparison
 /// with the elastica (docs/verification.md, "Finite rotations of the beam arms", a0 = 35 mm)
@@ -117,7 +118,7 @@ law::SteadyStateRule steady_state_rule(const FemParameters& p, const law::Specim
 /// crack length of its R curve passes it; returns that largest ratio.
 inline constexpr double kSmallRotationLoadError = 0.13;
 inline constexpr double kSmallRotationBound = 0.01;
-double note_small_strain_bound(law::SimulationResult& result);
+double note_small_strain_bound(result::SimulationResult& result);
 
 /// A cohesive zone resolved by fewer elements than this gives a coarse released energy per
 /// advance and a stepped R curve: Turon et al., "An engineering solution for mesh size effects in
@@ -130,7 +131,7 @@ inline constexpr double kMinZoneElements = 3;
 /// spans fewer than kMinZoneElements elements of length `element_length` along the crack plane,
 /// with the element size that would resolve it; nothing for a law without bridging (no zone).
 /// Returns the zone's length in elements (0 without a zone).
-double note_zone_resolution(law::SimulationResult& result, double element_length);
+double note_zone_resolution(result::SimulationResult& result, double element_length);
 
 /// Stress components [Pa] for DataOut (xx, xy, yy in 2D; the six in 3D).
 template <int dim>

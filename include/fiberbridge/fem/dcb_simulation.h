@@ -8,9 +8,9 @@
 // arm ends free to rotate). The crack plane is y = 0, the sawn notch is 0 < x < a0, the arms are
 // -h < y < 0 and 0 < y < h. The crack-plane point at x = Length is held (u = 0) to remove the
 // rigid-body rotation and translation; it carries no load under symmetric opening.
-#include "fiberbridge/law/rcurve.h"
-#include "fiberbridge/law/specimen.h"
 #include "fiberbridge/law/traction_law.h"
+#include "fiberbridge/result/rcurve.h"
+#include "fiberbridge/specimen/specimen.h"
 
 #include <functional>
 #include <string>
@@ -61,7 +61,7 @@ struct FemParameters {
   double steady_state_window = 10e-3;     ///< crack growth over which the plateau is judged [m]
   double plateau_tolerance = 0.01;        ///< relative spread of R_J accepted as a plateau
   unsigned int output_every = 0;          ///< VTU every N advances (0: only the final state)
-  /// (The out-of-plane E_R, nu_LR, nu_RT of plane strain and 3D are law::Material's.)
+  /// (The out-of-plane E_R, nu_LR, nu_RT of plane strain and 3D are specimen::Material's.)
   /// 3D shear moduli (Wood Handbook, Douglas-fir: G_LR/E_L = 0.064, G_RT/E_L = 0.007).
   double G_LR_over_E_L = 0.064;
   double G_RT_over_E_L = 0.007;
@@ -102,17 +102,18 @@ struct FemRunDetails {
 /// runs out. One RCurvePoint per accepted tip advance (the critical state just before the tip
 /// node is released). `output_dir` empty: no files. `progress` gets one line per few advances.
 /// Throws ComputationError with a diagnosis when equilibrium cannot be found.
-law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
-                                   const law::TractionLaw& law, double j_tip,
-                                   const FemParameters& parameters,
-                                   const std::string& output_dir = "",
-                                   const std::function<void(const std::string&)>& progress = {});
+result::SimulationResult simulate_dcb(const specimen::Specimen& specimen,
+                                      const specimen::Material& material,
+                                      const law::TractionLaw& law, double j_tip,
+                                      const FemParameters& parameters,
+                                      const std::string& output_dir = "",
+                                      const std::function<void(const std::string&)>& progress = {});
 
 /// The same, also filling `details`.
-law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
-                                   const law::TractionLaw& law, double j_tip,
-                                   const FemParameters& parameters, const std::string& output_dir,
-                                   const std::function<void(const std::string&)>& progress,
-                                   FemRunDetails& details);
+result::SimulationResult
+simulate_dcb(const specimen::Specimen& specimen, const specimen::Material& material,
+             const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
+             const std::string& output_dir, const std::function<void(const std::string&)>& progress,
+             FemRunDetails& details);
 
 } // namespace fiberbridge::fem

@@ -39,8 +39,8 @@ bool use_distributed_engine(const FemParameters& parameters, unsigned n_ranks);
 /// same result). Output (VTU pieces per rank + .pvtu + .pvd, fem_interface.csv) goes to
 /// `output_dir` unless empty; only rank 0 writes the shared files. `progress` is called on
 /// rank 0 only.
-law::SimulationResult
-simulate_dcb_distributed(const law::Specimen& specimen, const law::Material& material,
+result::SimulationResult
+simulate_dcb_distributed(const specimen::Specimen& specimen, const specimen::Material& material,
                          const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
                          const std::string& output_dir,
                          const std::function<void(const std::string&)>& progress, MPI_Comm comm,

@@ -9,7 +9,7 @@ namespace fiberbridge::fem {
 /// specimen, material and parameters; the 3D orthotropic compliance; a notch spanning enough
 /// elements and a ligament holding the tip J domains; and, with `law` given, the elastic rise of
 /// a rigid law. Throws InputError naming the section and key.
-void check_dcb_inputs(const law::Specimen& specimen, const law::Material& material,
+void check_dcb_inputs(const specimen::Specimen& specimen, const specimen::Material& material,
                       const FemParameters& parameters, const law::TractionLaw* law);
 
 } // namespace fiberbridge::fem

@@ -8,7 +8,7 @@
 #include "fiberbridge/analysis/test_record.h"
 #include "fiberbridge/beam/dcb_beam.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
-#include "fiberbridge/law/specimen.h"
+#include "fiberbridge/specimen/specimen.h"
 
 #include <functional>
 #include <string>
@@ -99,13 +99,13 @@ double initial_compliance(const analysis::TestRecord& record, const IdentifySett
 
 /// The E_L for which corrected beam theory (which the beam model reproduces) has compliance C at
 /// crack length a (other constants as in `material`).
-double modulus_for_compliance(const law::Specimen& specimen, const law::Material& material,
-                              double compliance);
+double modulus_for_compliance(const specimen::Specimen& specimen,
+                              const specimen::Material& material, double compliance);
 
 /// A beam run mapped onto openings as a displacement-controlled test sees it: before the first
 /// state the linear compliance at a0, then the states whose load-point opening exceeds every
 /// earlier one (a snap-back is passed in a jump), linear in between, the last state beyond.
-void model_at_openings(const law::SimulationResult& run, const std::vector<double>& opening,
+void model_at_openings(const result::SimulationResult& run, const std::vector<double>& opening,
                        std::vector<double>& load, std::vector<double>& crack_length);
 
 /// Maps a geometrically linear run onto arms that rotate far, in place, with ISO 15024's F and N
@@ -114,7 +114,7 @@ void model_at_openings(const law::SimulationResult& run, const std::vector<doubl
 /// the exact elastica, tests/analysis/record_reduction_tests.cc), so the state that releases the
 /// same G at the same a carries P / sqrt(F) at the opening delta N / sqrt(F). Returns the
 /// smallest F.
-double with_large_displacements(law::SimulationResult& run, double arm_thickness);
+double with_large_displacements(result::SimulationResult& run, double arm_thickness);
 
 /// A job of an identification: one independent piece of forward runs (an optimizer start, a
 /// polish round, a Jacobian column's perturbed run), its result serialized to bytes.
@@ -139,7 +139,7 @@ std::vector<std::string> serial_jobs(const std::string& what, std::size_t n,
 /// Jacobian's perturbed runs); the result is the same, bit for bit, whatever runner runs them
 /// where (each job's result crosses as raw bytes and the merge follows the serial order).
 Identification identify_law(const std::vector<analysis::TestRecord>& records,
-                            const law::Specimen& specimen, const law::Material& quoted,
+                            const specimen::Specimen& specimen, const specimen::Material& quoted,
                             const IdentifySettings& settings,
                             const std::function<void(const std::string&)>& progress = {},
                             const IdentifyJobRunner& run_jobs = {});

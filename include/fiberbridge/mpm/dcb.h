@@ -2,8 +2,6 @@
 // The DCB specimen in explicit MPM: two arms joined ahead of an explicit mid-plane crack, opened by
 // a slow prescribed velocity at the load line; the tip grows by a fixed step whenever its J
 // reaches J_tip and leaves a fresh bridging segment behind (docs/design.md section 2, "MPM").
-#include "fiberbridge/law/rcurve.h"
-#include "fiberbridge/law/specimen.h"
 #include "fiberbridge/law/traction_law.h"
 #include "fiberbridge/mpm/crack.h"
 #include "fiberbridge/mpm/explicit_solver.h"
@@ -11,6 +9,8 @@
 #include "fiberbridge/mpm/orthotropic_elastic.h"
 #include "fiberbridge/mpm/parameters.h"
 #include "fiberbridge/mpm/vtu_writer.h"
+#include "fiberbridge/result/rcurve.h"
+#include "fiberbridge/specimen/specimen.h"
 
 #include <chrono>
 #include <functional>
@@ -25,20 +25,20 @@ namespace fiberbridge::mpm {
 /// two cells through an arm, room for the tip to grow before the end ligament, and with `law`
 /// given the elastic rise of a rigid law), so that a scene can make them before its first item
 /// runs. Throws InputError naming the section and key.
-void check_dcb_inputs(const law::Specimen& specimen, const law::Material& material,
+void check_dcb_inputs(const specimen::Specimen& specimen, const specimen::Material& material,
                       const MpmParameters& params, const law::TractionLaw* law);
 
 /// The specimen model: body, crack, loading block and tip criterion. run() is simulate_dcb;
 /// step() lets tests load the specimen without growth and read its fields.
 class DcbModel {
 public:
-  DcbModel(const law::Specimen& specimen, const law::Material& material,
+  DcbModel(const specimen::Specimen& specimen, const specimen::Material& material,
            const law::TractionLaw& law, double j_tip, const MpmParameters& params,
            const std::string& output_dir = "",
            const std::function<void(const std::string&)>& progress = {});
 
   /// Load, step and grow until a stop condition; then the R curve and its summary.
-  law::SimulationResult run();
+  result::SimulationResult run();
   /// One time step of the loading; with `grow` the tip is checked (every few steps) and
   /// advanced. False once a stop condition holds (reason in stop_reason()).
   bool step(bool grow);
@@ -77,10 +77,10 @@ private:
   double opening_rate(double t) const;
   void advance_tip(double j_measured);
   void set_growth_window();
-  void finish(law::SimulationResult& r) const;
+  void finish(result::SimulationResult& r) const;
 
-  law::Specimen spec_;
-  law::Material mat_;
+  specimen::Specimen spec_;
+  specimen::Material mat_;
   const law::TractionLaw& user_law_;
   double j_tip_;
   MpmParameters prm_;
@@ -102,7 +102,7 @@ private:
   std::string stop_reason_;
 
   double opening_ = 0, load_ = 0;
-  std::vector<law::RCurvePoint> rcurve_;
+  std::vector<result::RCurvePoint> rcurve_;
   double max_kinetic_ratio_ = 0;
 
   bool resumed_ = false;            ///< the state came from a checkpoint
@@ -118,13 +118,15 @@ private:
 /// params.vtu_every_advances advances, with a .pvd). `progress` receives one line per advance.
 /// Throws InputError for unusable parameters and ComputationError with a diagnosis when the
 /// run becomes unstable.
-law::SimulationResult simulate_dcb(const law::Specimen& specimen, const law::Material& material,
-                                   const law::TractionLaw& law, double j_tip,
-                                   const MpmParameters& params, const std::string& output_dir,
-                                   const std::function<void(const std::string&)>& progress = {});
+result::SimulationResult simulate_dcb(const specimen::Specimen& specimen,
+                                      const specimen::Material& material,
+                                      const law::TractionLaw& law, double j_tip,
+                                      const MpmParameters& params, const std::string& output_dir,
+                                      const std::function<void(const std::string&)>& progress = {});
 
 /// First-mode period of a cantilever arm of length a (Euler-Bernoulli, clamped-free):
 /// t_vib = 1.787 a^2 sqrt(rho B h / (E_L I)), I = B h^3/12, h the arm thickness [s].
-double arm_vibration_period(const law::Specimen& specimen, const law::Material& material, double a);
+double arm_vibration_period(const specimen::Specimen& specimen, const specimen::Material& material,
+                            double a);
 
 } // namespace fiberbridge::mpm

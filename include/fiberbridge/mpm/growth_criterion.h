@@ -3,7 +3,7 @@
 // evaluated every few steps, is averaged over a window that restarts at each advance and
 // compared with J_tip. The window is a fraction of the first-mode period of the arm at the
 // current crack length, capped so that the tip keeps up with the loading.
-#include "fiberbridge/law/specimen.h"
+#include "fiberbridge/specimen/specimen.h"
 
 #include <cstddef>
 #include <deque>
@@ -23,8 +23,8 @@ public:
 
   /// `window_periods` arm periods per window (MPM/J window periods), `step` the tip advance [m],
   /// `check_interval` the time between two tip-J evaluations [s].
-  GrowthCriterion(const law::Specimen& specimen, const law::Material& material, double j_tip,
-                  double window_periods, double step, double check_interval);
+  GrowthCriterion(const specimen::Specimen& specimen, const specimen::Material& material,
+                  double j_tip, double window_periods, double step, double check_interval);
 
   /// Sizes the window for the tip at `a`, the load line opened by `opening` [m] and opening at
   /// `rate` [m/s]; a window the loading cuts short is counted when `count` is set.
@@ -42,8 +42,8 @@ public:
   void load_state(BinaryReader& in);
 
 private:
-  law::Specimen spec_;
-  law::Material mat_;
+  specimen::Specimen spec_;
+  specimen::Material mat_;
   double j_tip_, window_periods_, step_, check_interval_;
   std::size_t length_ = 1; ///< evaluations averaged
   std::deque<double> window_;

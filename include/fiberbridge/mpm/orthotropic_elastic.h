@@ -2,15 +2,15 @@
 // Orthotropic linear elasticity in the L-T plane (grain along x), in the material frame. Large
 // rotations are handled by the caller (corotational: strain = U - I of F = R U, stress rotated
 // by R), so the arms can swing open without spurious rotational strain.
-#include "fiberbridge/law/specimen.h"
+#include "fiberbridge/specimen/specimen.h"
 
 namespace fiberbridge::mpm {
 
 class OrthotropicElastic {
 public:
-  /// Plane stress or plane strain (law::in_plane_stiffness); a compliance that is not positive
+  /// Plane stress or plane strain (specimen::in_plane_stiffness); a compliance that is not positive
   /// definite throws InputError.
-  explicit OrthotropicElastic(const law::Material& m);
+  explicit OrthotropicElastic(const specimen::Material& m);
 
   /// Stress (xx, yy, xy) from strain (xx, yy, xy) with the tensor shear strain eps_xy.
   void stress(const double eps[3], double sig[3]) const {

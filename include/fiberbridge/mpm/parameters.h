@@ -46,7 +46,7 @@ struct MpmParameters {
   /// Stop once the uncracked ligament is shorter than this [m]; 0 selects the specimen height
   /// (a shorter ligament no longer behaves like a DCB and its J is no longer Eq. 1's).
   double end_ligament = 0;
-  /// Steady state (the shared rule, law::find_steady_state, evaluated on the whole run): after
+  /// Steady state (the shared rule, result::find_steady_state, evaluated on the whole run): after
   /// the root moved, R_J stays within `plateau_tolerance` over at least this much growth [m].
   double steady_state_window = 10e-3;
   /// Relative spread (max - min over mean) of R_J accepted as a plateau. Wider than the FEM's

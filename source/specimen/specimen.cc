@@ -1,10 +1,10 @@
-#include "fiberbridge/law/specimen.h"
+#include "fiberbridge/specimen/specimen.h"
 
 #include "fiberbridge/core/error.h"
 
 #include <cmath>
 
-namespace fiberbridge::law {
+namespace fiberbridge::specimen {
 
 void Specimen::validate(const std::string& c) const {
   if (!(length > 0 && width > 0 && height > 0 && initial_crack > 0))
@@ -70,4 +70,4 @@ double cbt_opening(const Specimen& s, const Material& m, double load, double a) 
   return load * 8 * ae * ae * ae / (m.E_L * s.width * h * h * h);
 }
 
-} // namespace fiberbridge::law
+} // namespace fiberbridge::specimen

@@ -1,4 +1,4 @@
-#include "fiberbridge/law/steady_state.h"
+#include "fiberbridge/result/steady_state.h"
 
 #include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace fiberbridge::law {
+namespace fiberbridge::result {
 
 double released_energy(const RCurvePoint& p) {
   const double ke = std::isfinite(p.kinetic_energy) ? p.kinetic_energy : 0.0;
@@ -136,4 +136,15 @@ void report_steady_state(SimulationResult& result, const SteadyState& s,
   }
 }
 
-} // namespace fiberbridge::law
+SteadyState finish_rcurve(SimulationResult& result, const law::TractionLaw& law, double j_tip,
+                          double initial_crack, double width, const SteadyStateRule& rule,
+                          const std::string& section, const std::vector<bool>& excluded) {
+  fill_r_energy(result.rcurve, width);
+  const SteadyState s = find_steady_state(result.rcurve, initial_crack, width,
+                                          law.critical_opening() > 0, rule, excluded);
+  report_steady_state(result, s, rule, section);
+  result.rdelta_rel_error_vs_eq2 = rdelta_error_vs_eq2(result, law, j_tip);
+  return s;
+}
+
+} // namespace fiberbridge::result

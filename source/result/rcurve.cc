@@ -1,4 +1,4 @@
-#include "fiberbridge/law/rcurve.h"
+#include "fiberbridge/result/rcurve.h"
 
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/units.h"
@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-namespace fiberbridge::law {
+namespace fiberbridge::result {
 
 void write_rcurve_csv(const std::string& path, const SimulationResult& r) {
   CsvWriter w(path,
@@ -25,7 +25,7 @@ void write_rcurve_csv(const std::string& path, const SimulationResult& r) {
   w.close();
 }
 
-double rdelta_error_vs_eq2(const SimulationResult& r, const TractionLaw& law, double j_tip) {
+double rdelta_error_vs_eq2(const SimulationResult& r, const law::TractionLaw& law, double j_tip) {
   double num = 0, den = 0;
   for (const auto& p : r.rcurve) {
     if (!std::isfinite(p.delta_root) || p.delta_root > law.critical_opening())
@@ -33,11 +33,11 @@ double rdelta_error_vs_eq2(const SimulationResult& r, const TractionLaw& law, do
     const double measured = std::isfinite(p.R_J) ? p.R_J : p.R_eq2;
     if (!std::isfinite(measured))
       continue;
-    const double exact = r_curve_eq2(law, j_tip, p.delta_root);
+    const double exact = law::r_curve_eq2(law, j_tip, p.delta_root);
     num += (measured - exact) * (measured - exact);
     den += exact * exact;
   }
   return den > 0 ? std::sqrt(num / den) : not_available;
 }
 
-} // namespace fiberbridge::law
+} // namespace fiberbridge::result

@@ -1,14 +1,16 @@
 #pragma once
 // The one R-curve post-processing of every specimen simulation (beam, FEM, MPM;
 // docs/design.md section 2, "Three R curves" and "Steady state and G_ss"): R_energy over the
-// neighbouring advances, and the steady-state rule that gives G_ss.
-#include "fiberbridge/law/rcurve.h"
+// neighbouring advances, the steady-state rule that gives G_ss (plateau flatness over a window of
+// growth), and the whole post-processing of a finished run (finish_rcurve).
+#include "fiberbridge/law/traction_law.h"
+#include "fiberbridge/result/rcurve.h"
 
 #include <cstddef>
 #include <string>
 #include <vector>
 
-namespace fiberbridge::law {
+namespace fiberbridge::result {
 
 /// Energy released so far for the whole width: W_ext - U - U_zone - KE (KE where the model has
 /// it) [J]. Its slope in a is R_energy.
@@ -60,4 +62,13 @@ SteadyState find_steady_state(const std::vector<RCurvePoint>& rcurve, double ini
 void report_steady_state(SimulationResult& result, const SteadyState& s,
                          const SteadyStateRule& rule, const std::string& section);
 
-} // namespace fiberbridge::law
+/// The post-processing of a finished run, on its whole R curve: R_energy of every row
+/// (fill_r_energy), the steady-state rule (find_steady_state with `bridging` = the law has a zone,
+/// reported by report_steady_state under the keys of `section`) and the relative error of R_J
+/// against Eq. 2 of `law` (rdelta_error_vs_eq2). `excluded` as in find_steady_state. Returns what
+/// the rule found.
+SteadyState finish_rcurve(SimulationResult& result, const law::TractionLaw& law, double j_tip,
+                          double initial_crack, double width, const SteadyStateRule& rule,
+                          const std::string& section, const std::vector<bool>& excluded = {});
+
+} // namespace fiberbridge::result

@@ -4,7 +4,7 @@
 // Ch. 5: E_L = 13.4 GPa, E_T/E_L = 0.050, G_LT/E_L = 0.078, nu_LT = 0.449).
 #include <string>
 
-namespace fiberbridge::law {
+namespace fiberbridge::specimen {
 
 struct Specimen {
   double length = 0.300;        ///< beam length along the grain [m]
@@ -59,4 +59,4 @@ double cbt_load_at_crack_length(const Specimen& s, const Material& m, double j_t
 /// Total load-point opening for load P at crack length a, corrected beam theory.
 double cbt_opening(const Specimen& s, const Material& m, double load, double a);
 
-} // namespace fiberbridge::law
+} // namespace fiberbridge::specimen

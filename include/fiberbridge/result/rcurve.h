@@ -1,12 +1,14 @@
 #pragma once
 // What every specimen simulation (fem, mpm, beam) returns: a plain struct, written by one writer.
 // docs/design.md section 2: three R curves per simulation, never one computed from the answer.
+#include "fiberbridge/law/traction_law.h"
+
 #include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
 
-namespace fiberbridge::law {
+namespace fiberbridge::result {
 
 inline constexpr double not_available = std::numeric_limits<double>::quiet_NaN();
 
@@ -49,7 +51,7 @@ void write_rcurve_csv(const std::string& path, const SimulationResult& result);
 
 /// Relative L2 difference between R_J (or R_eq2 if R_J is absent) and Eq. 2 of `law`, over the
 /// rows before the root first moves. NaN when there are no such rows.
-double rdelta_error_vs_eq2(const SimulationResult& result, const class TractionLaw& law,
+double rdelta_error_vs_eq2(const SimulationResult& result, const law::TractionLaw& law,
                            double j_tip);
 
-} // namespace fiberbridge::law
+} // namespace fiberbridge::result

@@ -1,48 +1,10 @@
-#include "fiberbridge/law/numerical_fault.h"
-
-#include "fiberbridge/core/units.h"
+#include "fiberbridge/result/numerical_fault.h"
 
 #include <cmath>
-#include <mutex>
-#include <sstream>
+#include <string>
+#include <utility>
 
-namespace fiberbridge::law {
-
-namespace {
-// One simulation runs at a time in a process (the scene items and the study run them in turn);
-// the mutex only keeps the context readable when a model evaluates its law on several threads.
-std::mutex context_mutex;
-std::string context_model = "simulation";
-std::size_t context_advances = 0;
-double context_a = not_available;
-} // namespace
-
-void begin_fault_context(const std::string& model) {
-  std::lock_guard<std::mutex> lock(context_mutex);
-  context_model = model;
-  context_advances = 0;
-  context_a = not_available;
-}
-
-std::string fault_location() {
-  std::lock_guard<std::mutex> lock(context_mutex);
-  std::ostringstream s;
-  s << context_model << ", step " << context_advances + 1;
-  if (context_advances == 0)
-    s << " (before the first tip advance)";
-  else
-    s << " (after tip advance " << context_advances << ", a = " << context_a / units::mm << " mm)";
-  return s.str();
-}
-
-void check_finite(double value, const std::string& quantity) {
-  if (!std::isfinite(value)) {
-    std::ostringstream s;
-    s << fault_location() << ": " << quantity << " is " << value
-      << " (numerical fault: the run is stopped, no result is written)";
-    throw NumericalFault(s.str());
-  }
-}
+namespace fiberbridge::result {
 
 void check_rcurve_point(const RCurvePoint& p) {
   const std::pair<const char*, double> always[] = {{"a_mm (tip position)", p.a},
@@ -67,9 +29,7 @@ void check_rcurve_point(const RCurvePoint& p) {
   for (const auto& [name, v] : optional)
     if (std::isinf(v))
       check_finite(v, std::string("R-curve row column ") + name);
-  std::lock_guard<std::mutex> lock(context_mutex);
-  ++context_advances;
-  context_a = p.a;
+  count_fault_step(p.a);
 }
 
-} // namespace fiberbridge::law
+} // namespace fiberbridge::result
