@@ -1,5 +1,5 @@
 #pragma once
-// Pieces of the DCB finite-element model (distributed_dcb.templates.h) that need no mesh: the
+// Pieces of the DCB finite-element model (source/fem/dcb_model.h) that need no mesh: the
 // orthotropic stiffness, the insertable law (extrinsic for rigid laws), the mesh
 // lines, the steady-state rule's parameters, the J-integral weight, the stress output and number
 // formatting.

@@ -5,7 +5,7 @@
 
 namespace fiberbridge::fem {
 
-/// What the engine (distributed_dcb.templates.h) rejects before it solves anything: the
+/// What the engine (source/fem/dcb_model.h) rejects before it solves anything: the
 /// specimen, material and parameters; the 3D orthotropic compliance; a notch spanning enough
 /// elements and a ligament holding the tip J domains; and, with `law` given, the elastic rise of
 /// a rigid law. Throws InputError naming the section and key.

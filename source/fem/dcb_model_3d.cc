@@ -1,9 +1,10 @@
-// The 3D instantiation of the distributed engine (a translation unit of its own: each takes
-// about a minute to compile, and the two compile in parallel).
-#include "distributed_dcb.templates.h"
+// The 3D instantiation of DcbModel (a translation unit of its own: each takes about a minute to
+// compile, and the two compile in parallel).
+#include "dcb_model.templates.h"
 
 namespace fiberbridge::fem::distributed {
 
+template class DcbModel<3>;
 template law::SimulationResult run_distributed<3>(const law::Specimen&, const law::Material&,
                                                   const law::TractionLaw&, double,
                                                   const FemParameters&, const std::string&,
