@@ -28,9 +28,8 @@ void declare_fem_section(dealii::ParameterHandler& prm) {
 
 void check_fem_item(SceneContext& ctx) {
   const auto params = parse_section<fem::FemParameters>(*ctx.prm, "FEM");
-  const law::TractionLaw* law = ctx.law_known_before_run();
   if (ctx.specimen_from_section())
-    fem::check_dcb_inputs(ctx.specimen(), ctx.material(), params, law);
+    fem::check_dcb_inputs(ctx.specimen(), ctx.material(), params);
 }
 
 void run_fem_item(SceneContext& ctx) {

@@ -551,8 +551,7 @@ SimulationResult DcbBeamSolver::run() {
   result.model = "beam";
   result.n_dofs_or_particles = static_cast<long>(element_K_.size());
   // A rigid law acts as given from sigma(0+) at the tip node: the one rule of every model.
-  if (const std::string n = law::rigid_law_insertion_note(*law_); !n.empty())
-    note(result, n);
+  law::discrete_law(*law_, result.notes);
   const double a0 = specimen_.initial_crack, L = specimen_.length;
   const double dc = law_->critical_opening();
   const double h_e = length_[1];

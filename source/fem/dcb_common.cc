@@ -68,20 +68,6 @@ SymmetricTensor<4, 3> orthotropic_stiffness<3>(const specimen::Material& m,
   return T;
 }
 
-const law::TractionLaw* insertable_law(const law::TractionLaw& law,
-                                       const specimen::Material& /* no elastic rise */,
-                                       const FemParameters& /* no elastic rise */,
-                                       std::unique_ptr<law::ElasticRiseLaw>& /* stays empty */,
-                                       std::vector<std::string>& notes) {
-  // Extrinsic insertion (law/rigid_law.h): the released segment carries the law as given from
-  // sigma(0+). The tie held it closed until the release; afterwards the tip node is tied, so the
-  // traction there acts on both sides of one node and cancels, and the tip J's crack-face term
-  // integrates the law's sigma(0+) at the tip point (the rise's zero there cost up to 2 % of R).
-  if (const std::string note = law::rigid_law_insertion_note(law); !note.empty())
-    notes.push_back(note);
-  return &law;
-}
-
 DcbMeshLines dcb_mesh_lines(const specimen::Specimen& specimen, const FemParameters& p) {
   const double L = specimen.length, a0 = specimen.initial_crack;
   const double h = specimen.arm_thickness();

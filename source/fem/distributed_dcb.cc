@@ -1,7 +1,7 @@
 // The entry points of the FEM engine and its dimension dispatch (light translation unit; the
-// engine itself is in distributed_dcb.templates.h, instantiated in distributed_dcb_2d.cc and
-// distributed_dcb_3d.cc). One engine (issue 14): on one rank (MPI_COMM_SELF) it is the serial
-// program, as in deal.II's step-40.
+// engine itself is DcbModel<dim>, dcb_model.h, instantiated in dcb_model_2d.cc and
+// dcb_model_3d.cc). One engine (docs/design.md section 2): on one rank (MPI_COMM_SELF) it is the
+// serial program, as in deal.II's step-40.
 #include "fiberbridge/fem/distributed_dcb.h"
 
 #include "fiberbridge/core/error.h"

@@ -7,7 +7,7 @@
 namespace fiberbridge::fem {
 
 void check_dcb_inputs(const specimen::Specimen& specimen, const specimen::Material& material,
-                      const FemParameters& parameters, const law::TractionLaw* law) {
+                      const FemParameters& parameters) {
   specimen.validate();
   material.validate();
   parameters.validate();
@@ -26,11 +26,6 @@ void check_dcb_inputs(const specimen::Specimen& specimen, const specimen::Materi
         " mm) is shorter than the tip J domains need (FEM/Tip J domain half-width "
         "elements + one arm thickness = " +
         fmt(needed / units::mm) + " mm)");
-  if (law) {
-    std::unique_ptr<law::ElasticRiseLaw> holder;
-    std::vector<std::string> notes;
-    insertable_law(*law, material, parameters, holder, notes);
-  }
 }
 
 } // namespace fiberbridge::fem

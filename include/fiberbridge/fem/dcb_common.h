@@ -1,10 +1,9 @@
 #pragma once
-// Pieces of the DCB finite-element model (distributed_dcb.templates.h) that need no mesh: the
+// Pieces of the DCB finite-element model (source/fem/dcb_model.h) that need no mesh: the
 // orthotropic stiffness, the insertable law (extrinsic for rigid laws), the mesh
 // lines, the steady-state rule's parameters, the J-integral weight, the stress output and number
 // formatting.
 #include "fiberbridge/fem/dcb_simulation.h"
-#include "fiberbridge/law/elastic_rise_law.h"
 #include "fiberbridge/law/traction_law.h"
 #include "fiberbridge/result/steady_state.h"
 #include "fiberbridge/specimen/specimen.h"
@@ -61,13 +60,6 @@ struct Ramp {
     return -1 / (x3 - x2);
   }
 };
-
-/// The law the crack segments use: `law` itself, also when it is rigid (sigma(0) > 0: extrinsic
-/// insertion, law/rigid_law.h; a note says so). `holder` stays empty (no elastic rise).
-const law::TractionLaw* insertable_law(const law::TractionLaw& law,
-                                       const specimen::Material& material, const FemParameters& p,
-                                       std::unique_ptr<law::ElasticRiseLaw>& holder,
-                                       std::vector<std::string>& notes);
 
 /// Mesh lines of one arm: uniform along x with a line at a0 (every tip advance is one element of
 /// size dx); heights from the crack plane y = 0 to the arm thickness h with a first layer

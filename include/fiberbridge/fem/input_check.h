@@ -5,11 +5,11 @@
 
 namespace fiberbridge::fem {
 
-/// What the engine (distributed_dcb.templates.h) rejects before it solves anything: the
+/// What the engine (source/fem/dcb_model.h) rejects before it solves anything: the
 /// specimen, material and parameters; the 3D orthotropic compliance; a notch spanning enough
-/// elements and a ligament holding the tip J domains; and, with `law` given, the elastic rise of
-/// a rigid law. Throws InputError naming the section and key.
+/// elements and a ligament holding the tip J domains. (Any law is accepted: a rigid one is
+/// inserted extrinsically, law/rigid_law.h.) Throws InputError naming the section and key.
 void check_dcb_inputs(const specimen::Specimen& specimen, const specimen::Material& material,
-                      const FemParameters& parameters, const law::TractionLaw* law);
+                      const FemParameters& parameters);
 
 } // namespace fiberbridge::fem

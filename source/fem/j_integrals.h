@@ -1,0 +1,42 @@
+#pragma once
+// The domain J integrals of the FEM (docs/design.md section 2, "Tip criterion and J integrals"):
+// the weights of tip J and J_ff, and the bulk part of J = int_A (sigma_i1 u_i,1 - W) q,1 dA. The
+// crack-face term is the crack plane's (crack_plane.h), with the same weights.
+#include "fiberbridge/fem/dcb_common.h"
+#include "mpi_algebra.h"
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fiberbridge::fem {
+
+/// Tip J: a full-height strip of +-`elements` elements around the tip, q = 1 on the inner half
+/// (the elements touching the tip carry the largest error of the singular field).
+inline Ramp tip_j_weight(double x_tip, unsigned elements, double dx) {
+  const double r = elements * dx;
+  const double p = std::max(1u, elements / 2) * dx;
+  return {x_tip - r, x_tip - p, x_tip + p, x_tip + r};
+}
+
+/// J_ff: q = 1 over the whole zone, ramps in the free arms between load line and notch and one
+/// arm thickness ahead of the tip strip (so no crack-face term), kinks on mesh lines.
+inline Ramp far_field_j_weight(double a0, double arm_thickness, double x_tip, unsigned elements,
+                               double dx, double x_end) {
+  auto snap = [&](double x) { return std::round(x / dx) * dx; };
+  const double x2 = x_tip + elements * dx;
+  return {snap(0.2 * a0), snap(0.8 * a0), x2, std::min(snap(x2 + arm_thickness), x_end)};
+}
+
+/// This rank's part of int_V (sigma_i1 u_i,1 - W) q,1 dV over its owned cells (Moran & Shih;
+/// q = q(x) across the whole width): sum over ranks and divide by the width for J.
+template <int dim>
+double bulk_domain_j_local(const dealii::DoFHandler<dim>& dof_handler,
+                           const dealii::Mapping<dim>& mapping, unsigned degree,
+                           const dealii::SymmetricTensor<4, dim>& C, const Vec& u_ghost,
+                           const Ramp& q);
+
+} // namespace fiberbridge::fem
