@@ -140,15 +140,22 @@ weights_axis_8(const double* pos, long begin, long end, long n, double origin, c
                int* first, double* S, double* dS, unsigned char* n_links) {
   weights_axis<v8d, v8i>(pos, begin, end, n, origin, A, first, S, dS, n_links);
 }
-WeightsAxisFn pick_weights_axis() {
+/// The widest lane count this processor runs (8: AVX-512 F and DQ, 4: AVX2, 2: SSE2), asked
+/// once: every lane kernel below is picked by it, so all of them use the same width.
+int simd_lane_width() {
   __builtin_cpu_init();
   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq"))
-    return weights_axis_8;
-  if (__builtin_cpu_supports("avx2"))
-    return weights_axis_4;
-  return weights_axis_2;
+    return 8;
+  return __builtin_cpu_supports("avx2") ? 4 : 2;
+}
+WeightsAxisFn pick_weights_axis() {
+  const int w = simd_lane_width();
+  return w == 8 ? weights_axis_8 : w == 4 ? weights_axis_4 : weights_axis_2;
 }
 #else
+int simd_lane_width() {
+  return 2;
+}
 WeightsAxisFn pick_weights_axis() {
   return weights_axis_2;
 }
@@ -296,12 +303,8 @@ __attribute__((target("avx512f,avx512dq"))) void update_lanes_8(const LaneUpdate
       });
 }
 UpdateLanesFn pick_update_lanes() {
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq"))
-    return update_lanes_8;
-  if (__builtin_cpu_supports("avx2"))
-    return update_lanes_4;
-  return update_lanes_2;
+  const int w = simd_lane_width();
+  return w == 8 ? update_lanes_8 : w == 4 ? update_lanes_4 : update_lanes_2;
 }
 #else
 UpdateLanesFn pick_update_lanes() {
