@@ -23,9 +23,9 @@ std::vector<double> cohesive_law_dRdd(const std::vector<double>& S);
 
 /// Both laws on the grid delta_i = i delta_c / n.
 struct ExtractedLaws {
-  std::vector<double> delta;       ///< [m]
-  std::vector<double> sigma_eq6;   ///< [Pa]
-  std::vector<double> sigma_dRdd;  ///< [Pa]
+  std::vector<double> delta;          ///< [m]
+  std::vector<double> sigma_eq6;      ///< [Pa]
+  std::vector<double> sigma_dRdd;     ///< [Pa]
   double area_eq6 = 0, area_dRdd = 0; ///< trapezoid areas [J/m^2] (both should be near G_B)
 };
 

@@ -7,10 +7,10 @@
 namespace fiberbridge::analysis {
 
 struct TrilinearFit {
-  law::TrilinearParameters law;  ///< fitted (d1, s1, d2, s2, dc), SI
-  double rms_residual = 0;       ///< root-mean-square of sigma_data - sigma_fit [Pa]
-  double max_residual = 0;       ///< [Pa]
-  double area_constraint = 0;    ///< the G_B the area was constrained to [J/m^2]
+  law::TrilinearParameters law; ///< fitted (d1, s1, d2, s2, dc), SI
+  double rms_residual = 0;      ///< root-mean-square of sigma_data - sigma_fit [Pa]
+  double max_residual = 0;      ///< [Pa]
+  double area_constraint = 0;   ///< the G_B the area was constrained to [J/m^2]
   bool d1_d2_free = false;
 };
 
@@ -24,7 +24,6 @@ TrilinearFit fit_trilinear_fixed(const std::vector<double>& delta, const std::ve
 /// d1 in [d1_min, d1_max], d2 in (d1, d2_max] free as well: variable projection (the closed form
 /// above inside a bounded 2-D search over d1, d2).
 TrilinearFit fit_trilinear_free(const std::vector<double>& delta, const std::vector<double>& sigma,
-                                double dc, double G_B, double d1_min, double d1_max,
-                                double d2_max);
+                                double dc, double G_B, double d1_min, double d1_max, double d2_max);
 
 } // namespace fiberbridge::analysis
