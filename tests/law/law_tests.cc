@@ -5,7 +5,6 @@
 #include "fiberbridge/law/law_spec.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
 #include "fiberbridge/law/seed_laws.h"
-#include "fiberbridge/specimen/specimen.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +12,6 @@
 
 using namespace fiberbridge;
 using namespace fiberbridge::law;
-using namespace fiberbridge::specimen;
 using units::kPa;
 using units::mm;
 
@@ -129,14 +127,6 @@ TEST(Law, BadLawsAreRejectedWithReasons) {
   EXPECT_THROW(parse_points_mm_kPa("0.1;661", "test"), InputError);
   s.type = "quadratic";
   EXPECT_THROW(make_law(s), InputError);
-}
-
-TEST(Specimen, CorrectedBeamTheoryChiIsotropic) {
-  // docs/design.md section 3, "Reference formulas": isotropic, nu = 0.3 gives chi ~ 0.66.
-  Material m;
-  m.E_L = m.E_T = 10e9;
-  m.G_LT = 10e9 / 2.6;
-  EXPECT_NEAR(cbt_chi(m), 0.6635, 5e-4);
 }
 
 TEST(Law, SeedControlLawsMatchTable1) {

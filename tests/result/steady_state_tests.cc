@@ -8,7 +8,6 @@
 #include <string>
 
 using namespace fiberbridge;
-using namespace fiberbridge::law;
 using namespace fiberbridge::result;
 
 namespace {
