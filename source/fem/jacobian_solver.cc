@@ -160,8 +160,8 @@ private:
 class CgAmg : public JacobianSolver {
 public:
   CgAmg(JacobianSystem& system, const FemParameters& parameters, RigidBodyModes modes)
-      : system_(system), linear_tolerance_(parameters.linear_tolerance),
-        higher_order_(parameters.degree > 1), modes_(std::move(modes)) {}
+      : system_(system), linear_tolerance_(parameters.linear.tolerance),
+        higher_order_(parameters.mesh.degree > 1), modes_(std::move(modes)) {}
 
   bool needs_spd_tangents() const override { return true; }
 
@@ -251,11 +251,11 @@ std::unique_ptr<JacobianSolver> make_jacobian_solver(const FemParameters& parame
                                                      JacobianSystem& system,
                                                      std::size_t max_low_rank,
                                                      RigidBodyModes modes) {
-  using LS = FemParameters::LinearSolver;
-  if (parameters.linear_solver == LS::cg_amg)
+  using LS = FemParameters::Linear::Solver;
+  if (parameters.linear.solver == LS::cg_amg)
     return std::make_unique<CgAmg>(system, parameters, std::move(modes));
   return std::make_unique<DirectWoodbury>(
-      system, parameters.linear_solver == LS::mumps ? "Amesos_Mumps" : "Amesos_Klu", max_low_rank);
+      system, parameters.linear.solver == LS::mumps ? "Amesos_Mumps" : "Amesos_Klu", max_low_rank);
 }
 
 } // namespace fiberbridge::fem
