@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -55,7 +56,9 @@ DcbModel<dim>::DcbModel(const specimen::Specimen& specimen, const specimen::Mate
       n_ranks_(Utilities::MPI::n_mpi_processes(comm)),
       C_(orthotropic_stiffness<dim>(material, parameters)), triangulation_(comm),
       fe_(FE_Q<dim>(parameters.mesh.degree), dim), dof_handler_(triangulation_),
-      crack_(1e-9 * specimen.length), output_(output_dir, comm) {
+      crack_(1e-9 * specimen.length),
+      timer_(MPI_COMM_SELF, std::cout, TimerOutput::never, TimerOutput::wall_times),
+      output_(output_dir, comm) {
   specimen_.validate();
   material_.validate();
   prm_.validate();
@@ -190,13 +193,12 @@ template <int dim>
 void DcbModel<dim>::residual(const Vec& u, Vec& r, Vec& r_full) {
   // r_full = K u + interface forces (its load-line rows are the reactions); r = r_full
   // condensed (ties moved to their partners, prescribed rows dropped).
-  const auto t0 = Clock::now();
+  const TimerOutput::Scope timed(timer_, "assembly");
   scratch_ghost_ = u;
   bulk_.vmult(r_full, u);
   crack_.add_forces(scratch_ghost_, r_full);
   r_full.compress(VectorOperation::add);
   condense(r_full, r);
-  info_.t_assemble += seconds_since(t0);
 }
 
 template <int dim>
@@ -258,7 +260,7 @@ void DcbModel<dim>::solve_jacobian(const Vec& rhs, Vec& x) {
 template <int dim>
 void DcbModel<dim>::assemble_jacobian(const std::vector<double>& tangents,
                                       TrilinosWrappers::SparseMatrix& jacobian) {
-  const auto t0 = Clock::now();
+  const TimerOutput::Scope timed(timer_, "assembly");
   std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
   if (pattern_epoch_ != epoch_) {
     // The couplings of the condensed Jacobian for the current ties: cells and opened segments
@@ -286,7 +288,6 @@ void DcbModel<dim>::assemble_jacobian(const std::vector<double>& tangents,
   }
   crack_.add_jacobian(tangents, hom_, jacobian);
   jacobian.compress(VectorOperation::add);
-  info_.t_assemble += seconds_since(t0);
 }
 
 template <int dim>
@@ -397,9 +398,7 @@ void DcbModel<dim>::solve_at(double target) {
 
 template <int dim>
 bool DcbModel<dim>::load_to_critical() {
-  auto t0 = Clock::now();
-  double J = tip_j();
-  info_.t_j += seconds_since(t0);
+  double J = timed_tip_j();
   if (!result_.rcurve.empty())
     j_after_release_ = J;
   if (J >= (1 - prm_.nonlinear.tip_tolerance) * j_tip_) {
@@ -435,9 +434,7 @@ bool DcbModel<dim>::load_to_critical() {
       next = 1.1 * lo.opening;
     solve_at(next);
     ++n_trials_;
-    t0 = Clock::now();
-    J = tip_j();
-    info_.t_j += seconds_since(t0);
+    J = timed_tip_j();
     path_.emplace_back(opening_, load_per_width());
     if (std::abs(J / j_tip_ - 1) <= prm_.nonlinear.tip_tolerance)
       return true;
@@ -541,10 +538,11 @@ result::RCurvePoint DcbModel<dim>::record_advance() {
     max_opening_behind_tip_ =
         std::max(max_opening_behind_tip_, crack_.station_opening(tip - 1, nodal, width_));
 
-  auto t0 = Clock::now();
-  pt.J_tip = tip_j();
-  pt.J_ff = far_field_j();
-  info_.t_j += seconds_since(t0);
+  {
+    const TimerOutput::Scope timed(timer_, "J integrals");
+    pt.J_tip = tip_j();
+    pt.J_ff = far_field_j();
+  }
   pt.R_J = pt.J_ff - 0.5 * pt.delta_root * law_->envelope(pt.delta_root);
   pt.R_eq2 = law::r_curve_eq2(*law_, j_tip_, pt.delta_root);
 
@@ -587,9 +585,8 @@ template <int dim>
 void DcbModel<dim>::output_fields(unsigned advance) {
   if (output_dir_.empty())
     return;
-  const auto t0 = Clock::now();
+  const TimerOutput::Scope timed(timer_, "output");
   output_.write(dof_handler_, mapping_, C_, u_ghost_, advance, crack_.x_tip() / units::mm);
-  info_.t_output += seconds_since(t0);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -600,24 +597,26 @@ result::SimulationResult DcbModel<dim>::run() {
   const auto start = Clock::now();
   result_.model = "fem";
   geometry_ = make_dcb_mesh(specimen_, prm_, triangulation_);
-  const auto t0 = Clock::now();
-  setup_dofs();
-  assemble_bulk();
-  crack_.make_interface(
-      *law_, prm_.interface.contact_stiffness_factor * material_.E_T / prm_.mesh.element_size,
-      prm_.mesh.degree, prm_.interface.subintervals, geometry_.x_lines, geometry_.z_lines, owned_,
-      specimen_.initial_crack);
-  RigidBodyModes modes;
-  if (prm_.linear.solver == FemParameters::Linear::Solver::cg_amg) {
-    modes.dim = dim;
-    modes.owned_support = owned_support_;
-    modes.centre = {{0.5 * specimen_.length, 0.0, 0.5 * (dim == 3 ? specimen_.width : 0.0)}};
-    DoFTools::extract_constant_modes(dof_handler_, ComponentMask(dim, true), modes.constant_modes);
+  {
+    const TimerOutput::Scope timed(timer_, "setup");
+    setup_dofs();
+    assemble_bulk();
+    crack_.make_interface(
+        *law_, prm_.interface.contact_stiffness_factor * material_.E_T / prm_.mesh.element_size,
+        prm_.mesh.degree, prm_.interface.subintervals, geometry_.x_lines, geometry_.z_lines, owned_,
+        specimen_.initial_crack);
+    RigidBodyModes modes;
+    if (prm_.linear.solver == FemParameters::Linear::Solver::cg_amg) {
+      modes.dim = dim;
+      modes.owned_support = owned_support_;
+      modes.centre = {{0.5 * specimen_.length, 0.0, 0.5 * (dim == 3 ? specimen_.width : 0.0)}};
+      DoFTools::extract_constant_modes(dof_handler_, ComponentMask(dim, true),
+                                       modes.constant_modes);
+    }
+    // ~ one factorization worth of solves (2D); in 3D a branch change happens at every z point of
+    // a station, hence the cap per z station.
+    solver_ = make_jacobian_solver(prm_, *this, 12 * crack_.n_z(), std::move(modes), timer_);
   }
-  // ~ one factorization worth of solves (2D); in 3D a branch change happens at every z point of
-  // a station, hence the cap per z station.
-  solver_ = make_jacobian_solver(prm_, *this, 12 * crack_.n_z(), std::move(modes));
-  info_.t_setup += seconds_since(t0);
   make_constraints(0.0, hom_);
   result_.n_dofs_or_particles = long(dof_handler_.n_dofs());
   info_.n_ranks = n_ranks_;
@@ -710,8 +709,14 @@ void DcbModel<dim>::summarize(Clock::time_point start) {
   const auto& stats = solver_->stats();
   info_.n_factorizations = stats.n_factorizations;
   info_.n_linear_solves = stats.n_linear_solves;
-  info_.t_factorize = stats.t_factorize;
-  info_.t_solve = stats.t_solve;
+  // A section never entered (output without an output directory) is absent: 0 s.
+  auto times = timer_.get_summary_data(TimerOutput::total_wall_time);
+  info_.t_setup = times["setup"];
+  info_.t_assemble = times["assembly"];
+  info_.t_factorize = times["factorize"];
+  info_.t_solve = times["solve"];
+  info_.t_j = times["J integrals"];
+  info_.t_output = times["output"];
   Utilities::System::MemoryStats memory;
   Utilities::System::get_memory_stats(memory);
   const double mb = double(memory.VmHWM) / 1024.0;
