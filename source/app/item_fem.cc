@@ -53,7 +53,7 @@ void run_fem_item(SceneContext& ctx) {
   auto& block = ctx.summary["fem"];
   block["engine"] = distributed ? "distributed" : "serial";
   block["n_ranks"] = distributed ? n_ranks : 1u;
-  block["dimension"] = params.dimension;
+  block["dimension"] = params.mesh.dimension;
   if (distributed) {
     block["n_cells"] = info.n_cells;
     block["peak_memory_MB_all_ranks"] = info.peak_memory_MB_sum;

@@ -54,7 +54,8 @@ SymmetricTensor<4, 3> orthotropic_stiffness<3>(const specimen::Material& m,
   const double m3 = S(0, 0) * (S(1, 1) * S(2, 2) - S(1, 2) * S(2, 1)) -
                     S(0, 1) * (S(1, 0) * S(2, 2) - S(1, 2) * S(2, 0)) +
                     S(0, 2) * (S(1, 0) * S(2, 1) - S(1, 1) * S(2, 0));
-  if (!(m2 > 0 && m3 > 0) || !(p.G_LR_over_E_L > 0 && p.G_RT_over_E_L > 0))
+  if (!(m2 > 0 && m3 > 0) ||
+      !(p.elasticity_3d.G_LR_over_E_L > 0 && p.elasticity_3d.G_RT_over_E_L > 0))
     throw InputError("Material/FEM: the 3D orthotropic compliance is not positive definite; "
                      "check nu_LT, nu_LR, nu_RT, E_R over E_L, G_LR over E_L, G_RT over E_L");
   C.invert(S);
@@ -63,8 +64,8 @@ SymmetricTensor<4, 3> orthotropic_stiffness<3>(const specimen::Material& m,
     for (unsigned j = 0; j < 3; ++j)
       T[i][i][j][j] = C(i, j);
   T[0][1][0][1] = m.G_LT;
-  T[0][2][0][2] = p.G_LR_over_E_L * m.E_L;
-  T[1][2][1][2] = p.G_RT_over_E_L * m.E_L;
+  T[0][2][0][2] = p.elasticity_3d.G_LR_over_E_L * m.E_L;
+  T[1][2][1][2] = p.elasticity_3d.G_RT_over_E_L * m.E_L;
   return T;
 }
 
@@ -73,11 +74,11 @@ DcbMeshLines dcb_mesh_lines(const specimen::Specimen& specimen, const FemParamet
   const double h = specimen.arm_thickness();
   DcbMeshLines m;
   // Uniform elements along x with a mesh line at a0, so that every advance is one element.
-  const unsigned n_a0 = std::max(1u, unsigned(std::lround(a0 / p.element_size)));
+  const unsigned n_a0 = std::max(1u, unsigned(std::lround(a0 / p.mesh.element_size)));
   m.dx = a0 / n_a0;
-  if (n_a0 < std::max(5u, p.tip_domain_elements + 1))
+  if (n_a0 < std::max(5u, p.j_domain.half_width_elements + 1))
     throw InputError("Specimen/Initial crack: the notch must span at least " +
-                     std::to_string(std::max(5u, p.tip_domain_elements + 1)) +
+                     std::to_string(std::max(5u, p.j_domain.half_width_elements + 1)) +
                      " elements (the far-field J domain lies between load line and notch tip); "
                      "reduce FEM/Element size");
   const unsigned n_x = std::max(n_a0 + 1, unsigned(std::floor(L / m.dx + 1e-9)));
@@ -93,21 +94,21 @@ DcbMeshLines dcb_mesh_lines(const specimen::Specimen& specimen, const FemParamet
   // of h / min_layers), graded towards the face and capped at h / min_layers. The crack-plane
   // elements are then dx / y1 = max(1, min_layers dx / h) times longer than high; above
   // kMaxCrackPlaneAspect the element length is not tied to the arm any more: refused.
-  const double cap = h / p.min_layers;
+  const double cap = h / p.mesh.min_layers;
   double size = std::min(m.dx, cap);
   m.first_layer = size;
   if (m.dx > kMaxCrackPlaneAspect * size * (1 + 1e-9))
     throw InputError(
         "FEM/Element size: " + fmt(m.dx / units::mm) + " mm elements on arms " +
         fmt(h / units::mm) +
-        " mm thick with Minimum layers per arm = " + std::to_string(p.min_layers) + " would be " +
-        fmt(m.dx / size, 3) + " times longer than high at the crack plane (bound " +
+        " mm thick with Minimum layers per arm = " + std::to_string(p.mesh.min_layers) +
+        " would be " + fmt(m.dx / size, 3) + " times longer than high at the crack plane (bound " +
         fmt(kMaxCrackPlaneAspect) + "); set FEM/Element size to at most " +
         fmt(kMaxCrackPlaneAspect * size / units::mm) + " mm or lower FEM/Minimum layers per arm");
   m.y = {0.0};
   while (m.y.back() + size < h - 1e-12 * h) {
     m.y.push_back(m.y.back() + size);
-    size = std::min(size * p.grading, cap);
+    size = std::min(size * p.mesh.grading, cap);
   }
   const double rest = h - m.y.back();
   if (rest < 0.5 * size && m.y.size() > 1)
@@ -126,20 +127,20 @@ double q1_bending_indicator(const specimen::Material& material, double element_l
 unsigned resolve_degree(const specimen::Specimen& specimen, const specimen::Material& material,
                         const FemParameters& p, std::vector<std::string>& notes) {
   const double h = specimen.arm_thickness();
-  const double indicator = q1_bending_indicator(material, p.element_size, h);
-  if (p.degree == 0) {
+  const double indicator = q1_bending_indicator(material, p.mesh.element_size, h);
+  if (p.mesh.degree == 0) {
     const unsigned degree = indicator > kQ1BendingBound ? 2 : 1;
     if (degree == 2)
       notes.push_back("FEM/Polynomial degree = auto chose Q2: Q1 elements " +
-                      fmt(p.element_size / units::mm) + " mm long on arms " + fmt(h / units::mm) +
-                      " mm thick would bend too stiffly (parasitic shear " +
+                      fmt(p.mesh.element_size / units::mm) + " mm long on arms " +
+                      fmt(h / units::mm) + " mm thick would bend too stiffly (parasitic shear " +
                       "(G_LT/E_L)(element/arm)^2 = " + fmt(indicator, 3) + " > " +
                       fmt(kQ1BendingBound) + ")");
     return degree;
   }
-  if (p.degree == 1 && indicator > kQ1BendingBound)
+  if (p.mesh.degree == 1 && indicator > kQ1BendingBound)
     notes.push_back(
-        "resolution: Q1 elements " + fmt(p.element_size / units::mm) + " mm long on arms " +
+        "resolution: Q1 elements " + fmt(p.mesh.element_size / units::mm) + " mm long on arms " +
         fmt(h / units::mm) +
         " mm thick bend too stiffly (parasitic shear (G_LT/E_L)(element/arm)^2 = " +
         fmt(indicator, 3) + " > " + fmt(kQ1BendingBound) + ", a load about " +
@@ -147,7 +148,7 @@ unsigned resolve_degree(const specimen::Specimen& specimen, const specimen::Mate
         " % high at fixed J); set FEM/Polynomial degree = auto or 2, or FEM/Element "
         "size to at most " +
         fmt(h * std::sqrt(kQ1BendingBound * material.E_L / material.G_LT) / units::mm, 3) + " mm");
-  return p.degree;
+  return p.mesh.degree;
 }
 
 double note_small_strain_bound(result::SimulationResult& result) {
@@ -195,8 +196,8 @@ double note_zone_resolution(result::SimulationResult& result, double element_len
 result::SteadyStateRule steady_state_rule(const FemParameters& p,
                                           const specimen::Specimen& specimen) {
   result::SteadyStateRule rule;
-  rule.window = p.steady_state_window;
-  rule.tolerance = p.plateau_tolerance;
+  rule.window = p.steady_state.window;
+  rule.tolerance = p.steady_state.plateau_tolerance;
   rule.root_move = 1e-9 * specimen.length;
   return rule;
 }

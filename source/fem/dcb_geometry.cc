@@ -23,8 +23,8 @@ DcbGeometry make_dcb_mesh(const specimen::Specimen& specimen, const FemParameter
   const std::vector<double>& y_lines = lines.y;
   g.z_lines = {0.0};
   if (dim == 3) {
-    const unsigned nz = prm.width_elements > 0
-                            ? prm.width_elements
+    const unsigned nz = prm.mesh.width_elements > 0
+                            ? prm.mesh.width_elements
                             : std::max(1u, unsigned(std::lround(specimen.width / g.dx)));
     for (unsigned k = 1; k <= nz; ++k)
       g.z_lines.push_back(specimen.width * k / nz);

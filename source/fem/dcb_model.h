@@ -17,6 +17,7 @@
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -85,6 +86,11 @@ private:
     return crack_.crack_face_integral(ramp, u_ghost_) / width_;
   }
   double tip_j() const;
+  /// tip_j() in the "J integrals" section.
+  double timed_tip_j() {
+    const dealii::TimerOutput::Scope timed(timer_, "J integrals");
+    return tip_j();
+  }
   double far_field_j() const;
   double bulk_energy() const; ///< per width [J/m]
   double stored_energy() const;
@@ -144,6 +150,10 @@ private:
   std::vector<std::pair<double, double>> path_;
 
   result::SimulationResult result_;
+  /// Wall time per section (setup, assembly, factorize, solve, J integrals, output) of this
+  /// rank, read back by summarize(); prints nothing. On MPI_COMM_SELF: a TimerOutput on the
+  /// model's communicator would reduce over the ranks at every section stop.
+  dealii::TimerOutput timer_;
   DistributedRunInfo info_;
   double max_opening_behind_tip_ = 0;
   double tip_dissipated_ = 0;                      ///< energy released by the releases [J/m]

@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -54,8 +55,10 @@ DcbModel<dim>::DcbModel(const specimen::Specimen& specimen, const specimen::Mate
       rank_(Utilities::MPI::this_mpi_process(comm)),
       n_ranks_(Utilities::MPI::n_mpi_processes(comm)),
       C_(orthotropic_stiffness<dim>(material, parameters)), triangulation_(comm),
-      fe_(FE_Q<dim>(parameters.degree), dim), dof_handler_(triangulation_),
-      crack_(1e-9 * specimen.length), output_(output_dir, comm) {
+      fe_(FE_Q<dim>(parameters.mesh.degree), dim), dof_handler_(triangulation_),
+      crack_(1e-9 * specimen.length),
+      timer_(MPI_COMM_SELF, std::cout, TimerOutput::never, TimerOutput::wall_times),
+      output_(output_dir, comm) {
   specimen_.validate();
   material_.validate();
   prm_.validate();
@@ -138,7 +141,7 @@ void DcbModel<dim>::assemble_bulk() {
   // Cell matrices by cell shape (vertex offsets from vertex 0, rounded).
   const double tol = 1e-9 * specimen_.length;
   auto key = [&](double v) { return std::llround(v / tol); };
-  const QGauss<dim> quadrature(prm_.degree + 1);
+  const QGauss<dim> quadrature(prm_.mesh.degree + 1);
   FEValues<dim> fe_values(mapping_, fe_, quadrature, update_gradients | update_JxW_values);
   const FEValuesExtractors::Vector displacement(0);
   const unsigned n = fe_.n_dofs_per_cell();
@@ -190,13 +193,12 @@ template <int dim>
 void DcbModel<dim>::residual(const Vec& u, Vec& r, Vec& r_full) {
   // r_full = K u + interface forces (its load-line rows are the reactions); r = r_full
   // condensed (ties moved to their partners, prescribed rows dropped).
-  const auto t0 = Clock::now();
+  const TimerOutput::Scope timed(timer_, "assembly");
   scratch_ghost_ = u;
   bulk_.vmult(r_full, u);
   crack_.add_forces(scratch_ghost_, r_full);
   r_full.compress(VectorOperation::add);
   condense(r_full, r);
-  info_.t_assemble += seconds_since(t0);
 }
 
 template <int dim>
@@ -258,7 +260,7 @@ void DcbModel<dim>::solve_jacobian(const Vec& rhs, Vec& x) {
 template <int dim>
 void DcbModel<dim>::assemble_jacobian(const std::vector<double>& tangents,
                                       TrilinosWrappers::SparseMatrix& jacobian) {
-  const auto t0 = Clock::now();
+  const TimerOutput::Scope timed(timer_, "assembly");
   std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
   if (pattern_epoch_ != epoch_) {
     // The couplings of the condensed Jacobian for the current ties: cells and opened segments
@@ -286,7 +288,6 @@ void DcbModel<dim>::assemble_jacobian(const std::vector<double>& tangents,
   }
   crack_.add_jacobian(tangents, hom_, jacobian);
   jacobian.compress(VectorOperation::add);
-  info_.t_assemble += seconds_since(t0);
 }
 
 template <int dim>
@@ -357,9 +358,10 @@ template <int dim>
 void DcbModel<dim>::solve_at(double target) {
   const Vec u0 = u_;
   const double opening0 = opening_;
-  unsigned n =
-      std::max(1u, unsigned(std::ceil(std::abs(target - opening0) / prm_.max_opening_increment)));
-  const NonlinearSettings settings{prm_.newton_tolerance, prm_.max_newton_iterations};
+  unsigned n = std::max(
+      1u, unsigned(std::ceil(std::abs(target - opening0) / prm_.nonlinear.max_opening_increment)));
+  const NonlinearSettings settings{prm_.nonlinear.newton_tolerance,
+                                   prm_.nonlinear.max_newton_iterations};
   std::string diagnosis;
   const int attempts = target == opening0 ? 1 : 6;
   for (int attempt = 0; attempt < attempts; ++attempt, n *= 2) {
@@ -369,7 +371,7 @@ void DcbModel<dim>::solve_at(double target) {
     for (unsigned i = 1; i <= n && ok; ++i) {
       const double opening = opening0 + (target - opening0) * double(i) / n;
       predict(opening);
-      ok = prm_.nonlinear_solver == FemParameters::NonlinearSolver::kinsol
+      ok = prm_.nonlinear.solver == FemParameters::Nonlinear::Solver::kinsol
                ? kinsol_solve(*this, u_, settings, opening, info_.n_newton, diagnosis)
                : newton_solve(*this, u_, settings, info_.n_newton, diagnosis);
     }
@@ -396,13 +398,11 @@ void DcbModel<dim>::solve_at(double target) {
 
 template <int dim>
 bool DcbModel<dim>::load_to_critical() {
-  auto t0 = Clock::now();
-  double J = tip_j();
-  info_.t_j += seconds_since(t0);
+  double J = timed_tip_j();
   if (!result_.rcurve.empty())
     j_after_release_ = J;
-  if (J >= (1 - prm_.tip_tolerance) * j_tip_) {
-    if (J > (1 + prm_.tip_tolerance) * j_tip_)
+  if (J >= (1 - prm_.nonlinear.tip_tolerance) * j_tip_) {
+    if (J > (1 + prm_.nonlinear.tip_tolerance) * j_tip_)
       ++n_unstable_;
     return false;
   }
@@ -434,11 +434,9 @@ bool DcbModel<dim>::load_to_critical() {
       next = 1.1 * lo.opening;
     solve_at(next);
     ++n_trials_;
-    t0 = Clock::now();
-    J = tip_j();
-    info_.t_j += seconds_since(t0);
+    J = timed_tip_j();
     path_.emplace_back(opening_, load_per_width());
-    if (std::abs(J / j_tip_ - 1) <= prm_.tip_tolerance)
+    if (std::abs(J / j_tip_ - 1) <= prm_.nonlinear.tip_tolerance)
       return true;
     const Sample s{opening_, std::sqrt(std::max(J, 0.0))};
     if (J < j_tip_)
@@ -475,7 +473,7 @@ double DcbModel<dim>::domain_j(const Ramp& q, bool crack_face_term) const {
   // q = q(x) across the whole width, so in 3D this is the width average of J along a straight
   // front). Divided by the width: per unit width, as the 2D J.
   double J =
-      gsum(bulk_domain_j_local(dof_handler_, mapping_, prm_.degree, C_, u_ghost_, q)) / width_;
+      gsum(bulk_domain_j_local(dof_handler_, mapping_, prm_.mesh.degree, C_, u_ghost_, q)) / width_;
   if (crack_face_term)
     J += crack_face_j(&q);
   return J;
@@ -483,14 +481,15 @@ double DcbModel<dim>::domain_j(const Ramp& q, bool crack_face_term) const {
 
 template <int dim>
 double DcbModel<dim>::tip_j() const {
-  return domain_j(tip_j_weight(crack_.x_tip(), prm_.tip_domain_elements, geometry_.dx), true);
+  return domain_j(tip_j_weight(crack_.x_tip(), prm_.j_domain.half_width_elements, geometry_.dx),
+                  true);
 }
 
 template <int dim>
 double DcbModel<dim>::far_field_j() const {
   return domain_j(far_field_j_weight(specimen_.initial_crack, specimen_.arm_thickness(),
-                                     crack_.x_tip(), prm_.tip_domain_elements, geometry_.dx,
-                                     geometry_.x_lines.back()),
+                                     crack_.x_tip(), prm_.j_domain.half_width_elements,
+                                     geometry_.dx, geometry_.x_lines.back()),
                   false);
 }
 
@@ -539,10 +538,11 @@ result::RCurvePoint DcbModel<dim>::record_advance() {
     max_opening_behind_tip_ =
         std::max(max_opening_behind_tip_, crack_.station_opening(tip - 1, nodal, width_));
 
-  auto t0 = Clock::now();
-  pt.J_tip = tip_j();
-  pt.J_ff = far_field_j();
-  info_.t_j += seconds_since(t0);
+  {
+    const TimerOutput::Scope timed(timer_, "J integrals");
+    pt.J_tip = tip_j();
+    pt.J_ff = far_field_j();
+  }
   pt.R_J = pt.J_ff - 0.5 * pt.delta_root * law_->envelope(pt.delta_root);
   pt.R_eq2 = law::r_curve_eq2(*law_, j_tip_, pt.delta_root);
 
@@ -585,9 +585,8 @@ template <int dim>
 void DcbModel<dim>::output_fields(unsigned advance) {
   if (output_dir_.empty())
     return;
-  const auto t0 = Clock::now();
+  const TimerOutput::Scope timed(timer_, "output");
   output_.write(dof_handler_, mapping_, C_, u_ghost_, advance, crack_.x_tip() / units::mm);
-  info_.t_output += seconds_since(t0);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -598,23 +597,26 @@ result::SimulationResult DcbModel<dim>::run() {
   const auto start = Clock::now();
   result_.model = "fem";
   geometry_ = make_dcb_mesh(specimen_, prm_, triangulation_);
-  const auto t0 = Clock::now();
-  setup_dofs();
-  assemble_bulk();
-  crack_.make_interface(*law_, prm_.contact_stiffness_factor * material_.E_T / prm_.element_size,
-                        prm_.degree, prm_.interface_subintervals, geometry_.x_lines,
-                        geometry_.z_lines, owned_, specimen_.initial_crack);
-  RigidBodyModes modes;
-  if (prm_.linear_solver == FemParameters::LinearSolver::cg_amg) {
-    modes.dim = dim;
-    modes.owned_support = owned_support_;
-    modes.centre = {{0.5 * specimen_.length, 0.0, 0.5 * (dim == 3 ? specimen_.width : 0.0)}};
-    DoFTools::extract_constant_modes(dof_handler_, ComponentMask(dim, true), modes.constant_modes);
+  {
+    const TimerOutput::Scope timed(timer_, "setup");
+    setup_dofs();
+    assemble_bulk();
+    crack_.make_interface(
+        *law_, prm_.interface.contact_stiffness_factor * material_.E_T / prm_.mesh.element_size,
+        prm_.mesh.degree, prm_.interface.subintervals, geometry_.x_lines, geometry_.z_lines, owned_,
+        specimen_.initial_crack);
+    RigidBodyModes modes;
+    if (prm_.linear.solver == FemParameters::Linear::Solver::cg_amg) {
+      modes.dim = dim;
+      modes.owned_support = owned_support_;
+      modes.centre = {{0.5 * specimen_.length, 0.0, 0.5 * (dim == 3 ? specimen_.width : 0.0)}};
+      DoFTools::extract_constant_modes(dof_handler_, ComponentMask(dim, true),
+                                       modes.constant_modes);
+    }
+    // ~ one factorization worth of solves (2D); in 3D a branch change happens at every z point of
+    // a station, hence the cap per z station.
+    solver_ = make_jacobian_solver(prm_, *this, 12 * crack_.n_z(), std::move(modes), timer_);
   }
-  // ~ one factorization worth of solves (2D); in 3D a branch change happens at every z point of
-  // a station, hence the cap per z station.
-  solver_ = make_jacobian_solver(prm_, *this, 12 * crack_.n_z(), std::move(modes));
-  info_.t_setup += seconds_since(t0);
   make_constraints(0.0, hom_);
   result_.n_dofs_or_particles = long(dof_handler_.n_dofs());
   info_.n_ranks = n_ranks_;
@@ -628,7 +630,7 @@ result::SimulationResult DcbModel<dim>::run() {
   report(
       "fem (distributed, " + std::to_string(dim) + "D, " + std::to_string(n_ranks_) +
       " MPI ranks): " + std::to_string(info_.n_cells) + " cells, " + std::to_string(info_.n_dofs) +
-      " dofs, Q" + std::to_string(prm_.degree) + ", element " + fmt(dx / units::mm) + " mm" +
+      " dofs, Q" + std::to_string(prm_.mesh.degree) + ", element " + fmt(dx / units::mm) + " mm" +
       (dim == 3 ? ", " + std::to_string(geometry_.z_lines.size() - 1) + " layers across the width"
                 : std::string()));
 
@@ -638,13 +640,13 @@ result::SimulationResult DcbModel<dim>::run() {
   unsigned advance = 0;
   path_.emplace_back(0.0, 0.0);
   while (true) {
-    if (crack_.x_tip() + prm_.tip_domain_elements * dx + h > L + 1e-9 * L) {
+    if (crack_.x_tip() + prm_.j_domain.half_width_elements * dx + h > L + 1e-9 * L) {
       if (result_.rcurve.empty())
         throw InputError(
             "Specimen: the ligament (Length - Initial crack = " + fmt((L - a0) / units::mm) +
             " mm) is shorter than the J domains ahead of the tip need (tip strip + one arm "
             "thickness = " +
-            fmt((prm_.tip_domain_elements * dx + h) / units::mm) + " mm)");
+            fmt((prm_.j_domain.half_width_elements * dx + h) / units::mm) + " mm)");
       if (first_root_move < 0)
         result_.notes.push_back(
             "no steady state: zone longer than ligament (the notch root never moved; the tip "
@@ -667,7 +669,7 @@ result::SimulationResult DcbModel<dim>::run() {
     if (reached_steady_state(false))
       break;
     ++advance;
-    if (prm_.output_every > 0 && advance % prm_.output_every == 0)
+    if (prm_.output.vtu_every > 0 && advance % prm_.output.vtu_every == 0)
       output_fields(advance);
     const double before = stored_energy();
     release_tip();
@@ -693,7 +695,7 @@ void DcbModel<dim>::summarize(Clock::time_point start) {
         fmt(max_opening_behind_tip_ / units::mm) + " mm, past the law's first linear branch (" +
         fmt(rise / units::mm) +
         " mm): the traction varies strongly within the tip element, integrated with " +
-        std::to_string(prm_.interface_subintervals) +
+        std::to_string(prm_.interface.subintervals) +
         " sub-intervals per element; if R_J falls below Eq. 2, refine FEM/Element size or raise "
         "FEM/Interface sub-intervals");
   note_small_strain_bound(result_);
@@ -707,8 +709,14 @@ void DcbModel<dim>::summarize(Clock::time_point start) {
   const auto& stats = solver_->stats();
   info_.n_factorizations = stats.n_factorizations;
   info_.n_linear_solves = stats.n_linear_solves;
-  info_.t_factorize = stats.t_factorize;
-  info_.t_solve = stats.t_solve;
+  // A section never entered (output without an output directory) is absent: 0 s.
+  auto times = timer_.get_summary_data(TimerOutput::total_wall_time);
+  info_.t_setup = times["setup"];
+  info_.t_assemble = times["assembly"];
+  info_.t_factorize = times["factorize"];
+  info_.t_solve = times["solve"];
+  info_.t_j = times["J integrals"];
+  info_.t_output = times["output"];
   Utilities::System::MemoryStats memory;
   Utilities::System::get_memory_stats(memory);
   const double mb = double(memory.VmHWM) / 1024.0;
@@ -717,21 +725,21 @@ void DcbModel<dim>::summarize(Clock::time_point start) {
   result_.wall_time_s = seconds_since(start);
   // The wall time of rank 0 is the run's (all ranks end together at the last collective).
   MPI_Bcast(&result_.wall_time_s, 1, MPI_DOUBLE, 0, comm_);
-  const char* solver_name = prm_.linear_solver == FemParameters::LinearSolver::mumps
+  const char* solver_name = prm_.linear.solver == FemParameters::Linear::Solver::mumps
                                 ? "Trilinos Amesos MUMPS (distributed)"
-                            : prm_.linear_solver == FemParameters::LinearSolver::klu
+                            : prm_.linear.solver == FemParameters::Linear::Solver::klu
                                 ? "Trilinos Amesos KLU (gathered on one rank)"
                                 : "CG + Trilinos ML AMG on the secant (SPD) Jacobian";
   result_.method.push_back(
       "distributed engine: " + std::to_string(dim) + "D, " + std::to_string(n_ranks_) +
       " MPI ranks, parallel::distributed::Triangulation (p4est), Trilinos MPI matrices, " +
       solver_name +
-      (prm_.nonlinear_solver == FemParameters::NonlinearSolver::kinsol
+      (prm_.nonlinear.solver == FemParameters::Nonlinear::Solver::kinsol
            ? ", SUNDIALS KINSOL with line search on MPI vectors"
            : ", own Newton with line search"));
   result_.method.push_back(
       "tip criterion: domain J over a full-height strip of +-" +
-      std::to_string(prm_.tip_domain_elements) +
+      std::to_string(prm_.j_domain.half_width_elements) +
       " elements (q = 1 on the inner half) with the cohesive crack-face term" +
       (dim == 3 ? ", over the whole width (width-averaged J of a straight through-width front)"
                 : "") +
@@ -762,7 +770,7 @@ run_distributed(const specimen::Specimen& specimen, const specimen::Material& ma
   // FEM/Polynomial degree = auto is resolved here, before the finite element is built.
   FemParameters resolved = parameters;
   std::vector<std::string> degree_notes;
-  resolved.degree = resolve_degree(specimen, material, parameters, degree_notes);
+  resolved.mesh.degree = resolve_degree(specimen, material, parameters, degree_notes);
   DcbModel<dim> model(specimen, material, law, j_tip, resolved, output_dir, progress, comm);
   auto result = model.run();
   result.notes.insert(result.notes.begin(), degree_notes.begin(), degree_notes.end());

@@ -33,10 +33,10 @@ simulate_dcb_distributed(const specimen::Specimen& specimen, const specimen::Mat
   FemRunDetails local_details;
   DistributedRunInfo& i = info ? *info : local_info;
   FemRunDetails& d = details ? *details : local_details;
-  if (parameters.dimension == 3)
+  if (parameters.mesh.dimension == 3)
     return distributed::run_distributed<3>(specimen, material, law, j_tip, parameters, output_dir,
                                            progress, comm, i, d);
-  if (parameters.dimension == 2)
+  if (parameters.mesh.dimension == 2)
     return distributed::run_distributed<2>(specimen, material, law, j_tip, parameters, output_dir,
                                            progress, comm, i, d);
   throw InputError("FEM/Dimension: must be 2 or 3");

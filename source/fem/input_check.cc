@@ -11,7 +11,7 @@ void check_dcb_inputs(const specimen::Specimen& specimen, const specimen::Materi
   specimen.validate();
   material.validate();
   parameters.validate();
-  if (parameters.dimension == 3)
+  if (parameters.mesh.dimension == 3)
     orthotropic_stiffness<3>(material, parameters);
   else
     orthotropic_stiffness<2>(material, parameters);
@@ -19,7 +19,7 @@ void check_dcb_inputs(const specimen::Specimen& specimen, const specimen::Materi
   // The engine's first tip is the notch end a0 (a mesh line); its growth loop needs the tip strip
   // and one arm thickness of ligament ahead of it for the J domains.
   const double L = specimen.length, a0 = specimen.initial_crack, h = specimen.arm_thickness();
-  const double needed = parameters.tip_domain_elements * lines.dx + h;
+  const double needed = parameters.j_domain.half_width_elements * lines.dx + h;
   if (a0 + needed > L + 1e-9 * L)
     throw InputError(
         "Specimen: the ligament (Length - Initial crack = " + fmt((L - a0) / units::mm) +

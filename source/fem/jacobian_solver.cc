@@ -30,8 +30,10 @@ namespace {
 /// products combine them, so the correction works on any number of ranks.
 class DirectWoodbury : public JacobianSolver {
 public:
-  DirectWoodbury(JacobianSystem& system, std::string amesos_name, std::size_t max_low_rank)
-      : system_(system), amesos_name_(std::move(amesos_name)), max_low_rank_(max_low_rank) {}
+  DirectWoodbury(JacobianSystem& system, std::string amesos_name, std::size_t max_low_rank,
+                 TimerOutput& timer)
+      : system_(system), amesos_name_(std::move(amesos_name)), max_low_rank_(max_low_rank),
+        timer_(timer) {}
 
   bool needs_spd_tangents() const override { return false; }
 
@@ -56,7 +58,7 @@ public:
 
   void solve(const Vec& rhs, Vec& x) override {
     // (A + U D U^T)^-1 b = y - Z (D^-1 + U^T Z)^-1 U^T y, y = A^-1 b, Z = A^-1 U.
-    const auto t0 = Clock::now();
+    const TimerOutput::Scope timed(timer_, "solve");
     direct_->solve(x, rhs);
     if (!woodbury_.empty()) {
       const unsigned k = woodbury_.size();
@@ -68,7 +70,6 @@ public:
         x.add(-v[i], woodbury_[i]->z);
     }
     ++stats_.n_linear_solves;
-    stats_.t_solve += seconds_since(t0);
   }
 
 private:
@@ -80,8 +81,8 @@ private:
 
   void factorize(const std::vector<double>& tangents, unsigned epoch) {
     direct_.reset(); // it refers to jacobian_: destroy it before the matrix changes
-    system_.assemble_jacobian(tangents, jacobian_);
-    const auto t1 = Clock::now();
+    system_.assemble_jacobian(tangents, jacobian_); // timed as assembly
+    const TimerOutput::Scope timed(timer_, "factorize");
     direct_ = std::make_unique<TrilinosWrappers::SolverDirect>(
         direct_control_, TrilinosWrappers::SolverDirect::AdditionalData(false, amesos_name_));
     direct_->initialize(jacobian_); // symbolic and numeric factorization
@@ -91,11 +92,10 @@ private:
     woodbury_.clear();
     cz_.clear();
     ++stats_.n_factorizations;
-    stats_.t_factorize += seconds_since(t1);
   }
 
   void correct(const std::vector<double>& tangents, const std::vector<unsigned>& changed) {
-    const auto t0 = Clock::now();
+    const TimerOutput::Scope timed(timer_, "solve");
     std::map<unsigned, LowRankTerm> terms;
     for (const unsigned p : changed) {
       auto it = low_rank_.find(p);
@@ -129,7 +129,6 @@ private:
       }
     if (k > 0)
       woodbury_inverse_.gauss_jordan();
-    stats_.t_solve += seconds_since(t0);
   }
 
   LowRankTerm low_rank_term(unsigned p) {
@@ -144,6 +143,7 @@ private:
   JacobianSystem& system_;
   const std::string amesos_name_;
   const std::size_t max_low_rank_;
+  TimerOutput& timer_;
   TrilinosWrappers::SparseMatrix jacobian_;
   std::unique_ptr<TrilinosWrappers::SolverDirect> direct_;
   SolverControl direct_control_;
@@ -159,26 +159,26 @@ private:
 /// exact inverse to correct.
 class CgAmg : public JacobianSolver {
 public:
-  CgAmg(JacobianSystem& system, const FemParameters& parameters, RigidBodyModes modes)
-      : system_(system), linear_tolerance_(parameters.linear_tolerance),
-        higher_order_(parameters.degree > 1), modes_(std::move(modes)) {}
+  CgAmg(JacobianSystem& system, const FemParameters& parameters, RigidBodyModes modes,
+        TimerOutput& timer)
+      : system_(system), linear_tolerance_(parameters.linear.tolerance),
+        higher_order_(parameters.mesh.degree > 1), modes_(std::move(modes)), timer_(timer) {}
 
   bool needs_spd_tangents() const override { return true; }
 
   void update(const std::vector<double>& tangents, unsigned epoch) override {
     if (setup_epoch_ == epoch && tangents == setup_tangents_)
       return;
-    system_.assemble_jacobian(tangents, jacobian_);
-    const auto t1 = Clock::now();
+    system_.assemble_jacobian(tangents, jacobian_); // timed as assembly
+    const TimerOutput::Scope timed(timer_, "factorize");
     setup_preconditioner();
     setup_tangents_ = tangents;
     setup_epoch_ = epoch;
     ++stats_.n_factorizations;
-    stats_.t_factorize += seconds_since(t1);
   }
 
   void solve(const Vec& rhs, Vec& x) override {
-    const auto t0 = Clock::now();
+    const TimerOutput::Scope timed(timer_, "solve");
     SolverControl control(20000, linear_tolerance_ * broadcast_norm(rhs, system_.communicator()));
     SolverCG<Vec> cg(control);
     x = 0;
@@ -191,7 +191,6 @@ public:
                              fmt(control.last_value()) + "); use mumps");
     }
     ++stats_.n_linear_solves;
-    stats_.t_solve += seconds_since(t0);
   }
 
 private:
@@ -239,6 +238,7 @@ private:
   const double linear_tolerance_;
   const bool higher_order_;
   const RigidBodyModes modes_;
+  TimerOutput& timer_;
   TrilinosWrappers::SparseMatrix jacobian_;
   TrilinosWrappers::PreconditionAMG amg_;
   unsigned setup_epoch_ = ~0u;
@@ -249,13 +249,14 @@ private:
 
 std::unique_ptr<JacobianSolver> make_jacobian_solver(const FemParameters& parameters,
                                                      JacobianSystem& system,
-                                                     std::size_t max_low_rank,
-                                                     RigidBodyModes modes) {
-  using LS = FemParameters::LinearSolver;
-  if (parameters.linear_solver == LS::cg_amg)
-    return std::make_unique<CgAmg>(system, parameters, std::move(modes));
+                                                     std::size_t max_low_rank, RigidBodyModes modes,
+                                                     TimerOutput& timer) {
+  using LS = FemParameters::Linear::Solver;
+  if (parameters.linear.solver == LS::cg_amg)
+    return std::make_unique<CgAmg>(system, parameters, std::move(modes), timer);
   return std::make_unique<DirectWoodbury>(
-      system, parameters.linear_solver == LS::mumps ? "Amesos_Mumps" : "Amesos_Klu", max_low_rank);
+      system, parameters.linear.solver == LS::mumps ? "Amesos_Mumps" : "Amesos_Klu", max_low_rank,
+      timer);
 }
 
 } // namespace fiberbridge::fem

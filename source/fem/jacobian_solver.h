@@ -6,6 +6,7 @@
 #include "fiberbridge/fem/dcb_simulation.h"
 #include "mpi_algebra.h"
 
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <array>
@@ -29,11 +30,11 @@ public:
   virtual MPI_Comm communicator() const = 0;
 };
 
-/// Counters and times of the linear algebra, for the run's summary.
+/// Counters of the linear algebra, for the run's summary (the times are the model's
+/// TimerOutput sections "factorize" and "solve").
 struct JacobianSolverStats {
   unsigned n_factorizations = 0; ///< Jacobian assemblies + factorizations (or AMG setups)
   unsigned n_linear_solves = 0;
-  double t_factorize = 0, t_solve = 0;
 };
 
 class JacobianSolver {
@@ -62,10 +63,11 @@ struct RigidBodyModes {
 };
 
 /// FEM/Linear solver: Amesos KLU or MUMPS with the Woodbury update (`max_low_rank` changed
-/// points at most), or CG + ML AMG.
+/// points at most), or CG + ML AMG. Factorizations (AMG setups) and solves are timed in the
+/// sections "factorize" and "solve" of `timer`.
 std::unique_ptr<JacobianSolver> make_jacobian_solver(const FemParameters& parameters,
                                                      JacobianSystem& system,
-                                                     std::size_t max_low_rank,
-                                                     RigidBodyModes modes);
+                                                     std::size_t max_low_rank, RigidBodyModes modes,
+                                                     dealii::TimerOutput& timer);
 
 } // namespace fiberbridge::fem

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -12,7 +13,15 @@ namespace fiberbridge::fem {
 using dealii::Patterns::Double;
 using dealii::Patterns::Integer;
 
-void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
+namespace {
+/// Throws InputError "FEM/<key>: <what>" unless `ok`.
+void require(bool ok, const char* key, const char* what) {
+  if (!ok)
+    throw InputError(std::string("FEM/") + key + ": " + what);
+}
+} // namespace
+
+void FemParameters::Mesh::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Element size", "2.0", Double(0),
                     "Element length along the crack plane [mm]; also the tip advance per "
                     "release. Uniform over the whole beam length.");
@@ -29,10 +38,80 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "stiffly (parasitic shear (G_LT/E_L)(Element size/arm thickness)^2 above "
                     "0.004, about 0.5 % load error: thin arms), Q1 elsewhere; the run notes "
                     "the choice.");
+  prm.declare_entry("Dimension", "2", Integer(2, 3),
+                    "2: plane stress/strain (Material/Plane); 3: the specimen extruded over "
+                    "Specimen/Width with free side faces (Material/Plane is then not used).");
+  prm.declare_entry("Width elements", "0", Integer(0),
+                    "3D only: element layers across the width (0: width / element size, "
+                    "rounded, at least 1).");
+}
+
+void FemParameters::Mesh::parse_parameters(dealii::ParameterHandler& prm) {
+  element_size = prm.get_double("Element size") * units::mm;
+  grading = prm.get_double("Grading");
+  min_layers = prm.get_integer("Minimum layers per arm");
+  degree = prm.get("Polynomial degree") == "auto" ? 0 : prm.get_integer("Polynomial degree");
+  dimension = prm.get_integer("Dimension");
+  width_elements = prm.get_integer("Width elements");
+}
+
+void FemParameters::Mesh::validate() const {
+  require(element_size > 0, "Element size", "must be positive (mm)");
+  require(grading >= 1, "Grading", "must be >= 1");
+  require(min_layers >= 1, "Minimum layers per arm", "must be >= 1");
+  require(degree <= 2, "Polynomial degree", "must be 1, 2 or auto");
+  require(dimension == 2 || dimension == 3, "Dimension", "must be 2 or 3");
+}
+
+void FemParameters::Elasticity3d::declare_parameters(dealii::ParameterHandler& prm) {
+  prm.declare_entry("G_LR over E_L", "0.064", Double(0),
+                    "3D only: shear modulus in the L-R (x-z) plane over E_L (Wood Handbook, "
+                    "Douglas-fir).");
+  prm.declare_entry("G_RT over E_L", "0.007", Double(0),
+                    "3D only: shear modulus in the R-T (z-y) plane over E_L (Wood Handbook, "
+                    "Douglas-fir).");
+}
+
+void FemParameters::Elasticity3d::parse_parameters(dealii::ParameterHandler& prm) {
+  G_LR_over_E_L = prm.get_double("G_LR over E_L");
+  G_RT_over_E_L = prm.get_double("G_RT over E_L");
+}
+
+void FemParameters::Elasticity3d::validate() const {
+  require(G_LR_over_E_L > 0, "G_LR over E_L", "must be positive");
+  require(G_RT_over_E_L > 0, "G_RT over E_L", "must be positive");
+}
+
+void FemParameters::Interface::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Interface sub-intervals", "4", Integer(1, 64),
                     "Sub-intervals of the composite Gauss-Lobatto rule on each crack-plane "
                     "element (1: the element nodes only). Resolves the law next to the tip, where "
                     "the opening rises from zero within one element.");
+  prm.declare_entry("Contact stiffness factor", "10", Double(0),
+                    "Frictionless contact penalty on closed crack faces = factor * E_T / element "
+                    "size [Pa/m].");
+  prm.declare_entry("Rigid law stiffness factor", "", dealii::Patterns::Anything(),
+                    "Deprecated and ignored: rigid laws (linear, exponential) are inserted "
+                    "extrinsically in every model (a released segment starts at sigma(0+)); a "
+                    "value leaves a note in the run's notes.");
+}
+
+void FemParameters::Interface::parse_parameters(dealii::ParameterHandler& prm,
+                                                std::vector<std::string>& notes) {
+  subintervals = prm.get_integer("Interface sub-intervals");
+  contact_stiffness_factor = prm.get_double("Contact stiffness factor");
+  if (!prm.get("Rigid law stiffness factor").empty())
+    notes.push_back("FEM/Rigid law stiffness factor is deprecated and ignored: rigid "
+                    "laws are inserted extrinsically in every model (no elastic "
+                    "rise; the same discrete law as the beam and the MPM)");
+}
+
+void FemParameters::Interface::validate() const {
+  require(subintervals >= 1, "Interface sub-intervals", "must be >= 1");
+  require(contact_stiffness_factor > 0, "Contact stiffness factor", "must be positive");
+}
+
+void FemParameters::Nonlinear::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Maximum opening increment", "0.5", Double(0),
                     "Largest change of the load-point opening in one nonlinear solve [mm]; "
                     "larger changes are reached in sub-steps.");
@@ -42,6 +121,30 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Residual norm relative to the load-line reaction norm.");
   prm.declare_entry("Maximum Newton iterations", "25", Integer(1),
                     "Nonlinear iterations per equilibrium solve (either nonlinear solver).");
+  prm.declare_entry("Nonlinear solver", "newton", dealii::Patterns::Selection("newton|kinsol"),
+                    "newton: own Newton with backtracking line search; kinsol: SUNDIALS KINSOL "
+                    "with its line search. Same Jacobian, same tolerance; a KINSOL result is "
+                    "re-checked against the Newton tolerance and a failure is reported.");
+}
+
+void FemParameters::Nonlinear::parse_parameters(dealii::ParameterHandler& prm) {
+  max_opening_increment = prm.get_double("Maximum opening increment") * units::mm;
+  tip_tolerance = prm.get_double("Tip toughness tolerance");
+  newton_tolerance = prm.get_double("Newton tolerance");
+  max_newton_iterations = prm.get_integer("Maximum Newton iterations");
+  solver = prm.get("Nonlinear solver") == "kinsol" ? Solver::kinsol : Solver::newton;
+}
+
+void FemParameters::Nonlinear::validate() const {
+  require(max_opening_increment > 0, "Maximum opening increment", "must be positive (mm)");
+  require(tip_tolerance > 0 && tip_tolerance < 0.1, "Tip toughness tolerance",
+          "must lie in (0, 0.1)");
+  require(newton_tolerance > 0 && newton_tolerance < 1e-3, "Newton tolerance",
+          "must lie in (0, 1e-3)");
+  require(max_newton_iterations >= 1, "Maximum Newton iterations", "must be >= 1");
+}
+
+void FemParameters::Linear::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Linear solver", "klu", dealii::Patterns::Selection("klu|umfpack|mumps|cg_amg"),
                     "Solver of the Jacobian systems: klu (Trilinos Amesos KLU; on several ranks "
                     "the matrix is gathered on one), mumps (Trilinos Amesos MUMPS, distributed "
@@ -51,39 +154,47 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
                     "Newton becomes a quasi-Newton with the same residual test; for meshes too "
                     "large for a direct solver). umfpack: deprecated, runs klu (the one engine "
                     "has no serial-only solver).");
-  prm.declare_entry("Dimension", "2", Integer(2, 3),
-                    "2: plane stress/strain (Material/Plane); 3: the specimen extruded over "
-                    "Specimen/Width with free side faces (Material/Plane is then not used).");
+  prm.declare_entry("Linear tolerance", "1e-10", Double(0, 1),
+                    "cg_amg only: CG stops at this residual relative to the right-hand side.");
   prm.declare_entry("Engine", "auto", dealii::Patterns::Selection("auto|serial|distributed"),
                     "Deprecated and ignored: there is one engine (p4est + Trilinos, serial on "
                     "one rank); a value other than auto leaves a note in the run's notes.");
-  prm.declare_entry("Width elements", "0", Integer(0),
-                    "3D only: element layers across the width (0: width / element size, "
-                    "rounded, at least 1).");
-  prm.declare_entry("G_LR over E_L", "0.064", Double(0),
-                    "3D only: shear modulus in the L-R (x-z) plane over E_L (Wood Handbook, "
-                    "Douglas-fir).");
-  prm.declare_entry("G_RT over E_L", "0.007", Double(0),
-                    "3D only: shear modulus in the R-T (z-y) plane over E_L (Wood Handbook, "
-                    "Douglas-fir).");
-  prm.declare_entry("Linear tolerance", "1e-10", Double(0, 1),
-                    "cg_amg only: CG stops at this residual relative to the right-hand side.");
-  prm.declare_entry("Nonlinear solver", "newton", dealii::Patterns::Selection("newton|kinsol"),
-                    "newton: own Newton with backtracking line search; kinsol: SUNDIALS KINSOL "
-                    "with its line search. Same Jacobian, same tolerance; a KINSOL result is "
-                    "re-checked against the Newton tolerance and a failure is reported.");
-  prm.declare_entry("Contact stiffness factor", "10", Double(0),
-                    "Frictionless contact penalty on closed crack faces = factor * E_T / element "
-                    "size [Pa/m].");
-  prm.declare_entry("Rigid law stiffness factor", "", dealii::Patterns::Anything(),
-                    "Deprecated and ignored: rigid laws (linear, exponential) are inserted "
-                    "extrinsically in every model (a released segment starts at sigma(0+)); a "
-                    "value leaves a note in the run's notes.");
+}
+
+void FemParameters::Linear::parse_parameters(dealii::ParameterHandler& prm,
+                                             std::vector<std::string>& notes) {
+  // The patterns admit only these values.
+  const std::string ls = prm.get("Linear solver");
+  solver = ls == "mumps" ? Solver::mumps : ls == "cg_amg" ? Solver::cg_amg : Solver::klu;
+  if (ls == "umfpack")
+    notes.push_back("FEM/Linear solver = umfpack is deprecated: ran klu (the one "
+                    "engine's direct solvers are klu and mumps)");
+  tolerance = prm.get_double("Linear tolerance");
+  if (prm.get("Engine") != "auto")
+    notes.push_back("FEM/Engine = " + prm.get("Engine") +
+                    " is deprecated and ignored: one engine (p4est + Trilinos) runs "
+                    "on any number of ranks");
+}
+
+void FemParameters::Linear::validate() const {
+  require(tolerance > 0 && tolerance < 1, "Linear tolerance", "must lie in (0, 1)");
+}
+
+void FemParameters::JDomain::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Tip J domain half-width", "4", Integer(1),
                     "Half-width of the full-height strip around the tip used for the tip J "
                     "domain integral, in elements.");
-  // The steady-state rule shared by every model (result::find_steady_state), under the same key
-  // names in the Beam, FEM and MPM sections.
+}
+
+void FemParameters::JDomain::parse_parameters(dealii::ParameterHandler& prm) {
+  half_width_elements = prm.get_integer("Tip J domain half-width");
+}
+
+void FemParameters::JDomain::validate() const {
+  require(half_width_elements >= 1, "Tip J domain half-width", "must be >= 1 element");
+}
+
+void FemParameters::SteadyState::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Steady state window", "10", Double(0),
                     "Steady state: after the notch root moved, R_J has stayed within the plateau "
                     "tolerance over at least this much crack growth [mm]; G_ss is its mean there.");
@@ -93,47 +204,11 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Plateau tolerance", "0.01", Double(0, 1),
                     "Relative spread (max - min over mean) of R_J over the steady-state window "
                     "accepted as a plateau.");
-  prm.declare_entry("Output every", "0", Integer(0),
-                    "Write VTU every N tip advances (0: only the final state).");
 }
 
-void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
-  element_size = prm.get_double("Element size") * units::mm;
-  grading = prm.get_double("Grading");
-  min_layers = prm.get_integer("Minimum layers per arm");
-  degree = prm.get("Polynomial degree") == "auto" ? 0 : prm.get_integer("Polynomial degree");
-  interface_subintervals = prm.get_integer("Interface sub-intervals");
-  max_opening_increment = prm.get_double("Maximum opening increment") * units::mm;
-  tip_tolerance = prm.get_double("Tip toughness tolerance");
-  newton_tolerance = prm.get_double("Newton tolerance");
-  max_newton_iterations = prm.get_integer("Maximum Newton iterations");
-  // The patterns admit only these values.
-  const std::string ls = prm.get("Linear solver");
-  linear_solver = ls == "mumps"    ? LinearSolver::mumps
-                  : ls == "cg_amg" ? LinearSolver::cg_amg
-                                   : LinearSolver::klu;
-  deprecation_notes.clear();
-  if (ls == "umfpack")
-    deprecation_notes.push_back("FEM/Linear solver = umfpack is deprecated: ran klu (the one "
-                                "engine's direct solvers are klu and mumps)");
-  dimension = prm.get_integer("Dimension");
-  if (prm.get("Engine") != "auto")
-    deprecation_notes.push_back("FEM/Engine = " + prm.get("Engine") +
-                                " is deprecated and ignored: one engine (p4est + Trilinos) runs "
-                                "on any number of ranks");
-  width_elements = prm.get_integer("Width elements");
-  G_LR_over_E_L = prm.get_double("G_LR over E_L");
-  G_RT_over_E_L = prm.get_double("G_RT over E_L");
-  linear_tolerance = prm.get_double("Linear tolerance");
-  nonlinear_solver =
-      prm.get("Nonlinear solver") == "kinsol" ? NonlinearSolver::kinsol : NonlinearSolver::newton;
-  contact_stiffness_factor = prm.get_double("Contact stiffness factor");
-  if (!prm.get("Rigid law stiffness factor").empty())
-    deprecation_notes.push_back("FEM/Rigid law stiffness factor is deprecated and ignored: rigid "
-                                "laws are inserted extrinsically in every model (no elastic "
-                                "rise; the same discrete law as the beam and the MPM)");
-  tip_domain_elements = prm.get_integer("Tip J domain half-width");
-  steady_state_window = prm.get_double("Steady state window") * units::mm;
+void FemParameters::SteadyState::parse_parameters(dealii::ParameterHandler& prm,
+                                                  std::vector<std::string>& notes) {
+  window = prm.get_double("Steady state window") * units::mm;
   if (const std::string old = prm.get("Steady-state window"); !old.empty()) {
     std::size_t used = 0;
     double v = 0;
@@ -144,39 +219,60 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
     }
     if (used == 0 || old.find_first_not_of(" \t", used) != std::string::npos)
       throw InputError("FEM/Steady-state window: expected a length in mm, got '" + old + "'");
-    steady_state_window = v * units::mm;
-    deprecation_notes.push_back("FEM/Steady-state window is deprecated: use FEM/Steady state "
-                                "window (the same key in the Beam, FEM and MPM sections)");
+    window = v * units::mm;
+    notes.push_back("FEM/Steady-state window is deprecated: use FEM/Steady state "
+                    "window (the same key in the Beam, FEM and MPM sections)");
   }
   plateau_tolerance = prm.get_double("Plateau tolerance");
-  output_every = prm.get_integer("Output every");
+}
+
+void FemParameters::SteadyState::validate() const {
+  require(window > 0, "Steady state window", "must be positive (mm)");
+  require(plateau_tolerance > 0, "Plateau tolerance", "must be positive");
+}
+
+void FemParameters::Output::declare_parameters(dealii::ParameterHandler& prm) {
+  prm.declare_entry("Output every", "0", Integer(0),
+                    "Write VTU every N tip advances (0: only the final state).");
+}
+
+void FemParameters::Output::parse_parameters(dealii::ParameterHandler& prm) {
+  vtu_every = prm.get_integer("Output every");
+}
+
+void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
+  Mesh::declare_parameters(prm);
+  Elasticity3d::declare_parameters(prm);
+  Interface::declare_parameters(prm);
+  Nonlinear::declare_parameters(prm);
+  Linear::declare_parameters(prm);
+  JDomain::declare_parameters(prm);
+  SteadyState::declare_parameters(prm);
+  Output::declare_parameters(prm);
+}
+
+void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
+  deprecation_notes.clear();
+  // Linear first: its notes (umfpack, Engine) come first in the run's notes, as they always did.
+  linear.parse_parameters(prm, deprecation_notes);
+  mesh.parse_parameters(prm);
+  elasticity_3d.parse_parameters(prm);
+  interface.parse_parameters(prm, deprecation_notes);
+  nonlinear.parse_parameters(prm);
+  j_domain.parse_parameters(prm);
+  steady_state.parse_parameters(prm, deprecation_notes);
+  output.parse_parameters(prm);
   validate();
 }
 
 void FemParameters::validate() const {
-  auto require = [](bool ok, const char* key, const char* what) {
-    if (!ok)
-      throw InputError(std::string("FEM/") + key + ": " + what);
-  };
-  require(element_size > 0, "Element size", "must be positive (mm)");
-  require(grading >= 1, "Grading", "must be >= 1");
-  require(min_layers >= 1, "Minimum layers per arm", "must be >= 1");
-  require(degree <= 2, "Polynomial degree", "must be 1, 2 or auto");
-  require(interface_subintervals >= 1, "Interface sub-intervals", "must be >= 1");
-  require(max_opening_increment > 0, "Maximum opening increment", "must be positive (mm)");
-  require(tip_tolerance > 0 && tip_tolerance < 0.1, "Tip toughness tolerance",
-          "must lie in (0, 0.1)");
-  require(newton_tolerance > 0 && newton_tolerance < 1e-3, "Newton tolerance",
-          "must lie in (0, 1e-3)");
-  require(max_newton_iterations >= 1, "Maximum Newton iterations", "must be >= 1");
-  require(contact_stiffness_factor > 0, "Contact stiffness factor", "must be positive");
-  require(tip_domain_elements >= 1, "Tip J domain half-width", "must be >= 1 element");
-  require(steady_state_window > 0, "Steady state window", "must be positive (mm)");
-  require(plateau_tolerance > 0, "Plateau tolerance", "must be positive");
-  require(dimension == 2 || dimension == 3, "Dimension", "must be 2 or 3");
-  require(G_LR_over_E_L > 0, "G_LR over E_L", "must be positive");
-  require(G_RT_over_E_L > 0, "G_RT over E_L", "must be positive");
-  require(linear_tolerance > 0 && linear_tolerance < 1, "Linear tolerance", "must lie in (0, 1)");
+  mesh.validate();
+  elasticity_3d.validate();
+  interface.validate();
+  nonlinear.validate();
+  linear.validate();
+  j_domain.validate();
+  steady_state.validate();
 }
 
 } // namespace fiberbridge::fem

@@ -73,9 +73,9 @@ void print(const char* what, const result::SimulationResult& r) {
 
 fem::FemParameters distributed_parameters() {
   fem::FemParameters prm;
-  prm.linear_solver = fem::FemParameters::LinearSolver::mumps;
-  prm.element_size = 2 * mm;
-  prm.steady_state_window = 6 * mm;
+  prm.linear.solver = fem::FemParameters::Linear::Solver::mumps;
+  prm.mesh.element_size = 2 * mm;
+  prm.steady_state.window = 6 * mm;
   return prm;
 }
 
@@ -93,9 +93,9 @@ TEST(FemDistributed, LowRankUpdateMatchesAmgRefactorization2D) {
   const specimen::Material wood;
   const auto law = short_trilinear();
   auto prm = distributed_parameters();
-  prm.linear_solver = fem::FemParameters::LinearSolver::klu;
+  prm.linear.solver = fem::FemParameters::Linear::Solver::klu;
   const auto d = fem::simulate_dcb_distributed(spec, wood, law, 200, prm, "", {}, MPI_COMM_SELF);
-  prm.linear_solver = fem::FemParameters::LinearSolver::cg_amg;
+  prm.linear.solver = fem::FemParameters::Linear::Solver::cg_amg;
   const auto s = fem::simulate_dcb_distributed(spec, wood, law, 200, prm, "", {}, MPI_COMM_SELF);
   print("cg_amg", s);
   ASSERT_GE(s.rcurve.size(), 10u);
@@ -121,13 +121,13 @@ TEST(FemDistributed, Lefm3dFollowsCorrectedBeamTheory) {
   const specimen::Material wood;
   const double j_tip = 200;
   auto prm = distributed_parameters();
-  prm.dimension = 3;
-  prm.width_elements = 4;
+  prm.mesh.dimension = 3;
+  prm.mesh.width_elements = 4;
   fem::DistributedRunInfo info;
   const auto r = fem::simulate_dcb_distributed(spec, wood, law::NoBridgingLaw(), j_tip, prm, "", {},
                                                MPI_COMM_SELF, &info);
   print("3D LEFM", r);
-  prm.dimension = 2;
+  prm.mesh.dimension = 2;
   const auto r2 = fem::simulate_dcb_distributed(spec, wood, law::NoBridgingLaw(), j_tip, prm, "",
                                                 {}, MPI_COMM_SELF);
   EXPECT_EQ(info.dimension, 3u);
@@ -142,7 +142,7 @@ TEST(FemDistributed, Lefm3dFollowsCorrectedBeamTheory) {
     EXPECT_NEAR(p.load / cbt, 1.0, 0.015) << "a = " << p.a / mm << " mm";
     // The width-averaged tip J is the criterion; the far-field J (another domain) must agree:
     // path independence in 3D, 0.5 % as in the 2D test.
-    EXPECT_NEAR(p.J_tip / j_tip, 1.0, prm.tip_tolerance);
+    EXPECT_NEAR(p.J_tip / j_tip, 1.0, prm.nonlinear.tip_tolerance);
     EXPECT_NEAR(p.R_J / j_tip, 1.0, 0.005);
   }
   EXPECT_NEAR(r.G_ss / j_tip, 1.0, 0.005);
@@ -172,8 +172,8 @@ TEST(FemDistributed, Thin3dReproducesPlaneStress) {
     const auto r2 = fem::simulate_dcb_distributed(spec, wood, law, 200, prm, "", {}, MPI_COMM_SELF);
     ASSERT_GE(r2.rcurve.size(), 10u);
     EXPECT_TRUE(r2.reached_steady_state);
-    prm.dimension = 3;
-    prm.width_elements = 1;
+    prm.mesh.dimension = 3;
+    prm.mesh.width_elements = 1;
     const auto r3 = fem::simulate_dcb_distributed(spec, wood, law, 200, prm, "", {}, MPI_COMM_SELF);
     const double diff = max_rel_diff(r2, r3);
     std::cout << "  " << (coupled ? "with" : "without")
@@ -194,7 +194,7 @@ TEST(FemDistributed, OldSteadyStateWindowKeyIsMappedWithANote) {
   handler.parse_input_from_string("set Steady-state window = 6\n");
   fem::FemParameters p;
   p.parse_parameters(handler);
-  EXPECT_DOUBLE_EQ(p.steady_state_window, 6 * mm);
+  EXPECT_DOUBLE_EQ(p.steady_state.window, 6 * mm);
   ASSERT_EQ(p.deprecation_notes.size(), 1u);
   EXPECT_NE(p.deprecation_notes[0].find("FEM/Steady-state window is deprecated"),
             std::string::npos);
@@ -217,7 +217,7 @@ TEST(FemDistributed, DeprecatedEngineKeysAreNoted) {
   handler.parse_input_from_string("set Engine = serial\nset Linear solver = umfpack\n");
   fem::FemParameters p;
   p.parse_parameters(handler);
-  EXPECT_EQ(p.linear_solver, fem::FemParameters::LinearSolver::klu);
+  EXPECT_EQ(p.linear.solver, fem::FemParameters::Linear::Solver::klu);
   ASSERT_EQ(p.deprecation_notes.size(), 2u);
   EXPECT_TRUE(fem::use_distributed_engine(p, 1));
   const auto r = fem::simulate_dcb(short_dcb(), specimen::Material(), short_trilinear(), 200, p);
@@ -276,7 +276,7 @@ TEST_F(FemMpi, KinsolOnTwoRanksAgreesWithNewton) {
   auto prm = distributed_parameters();
   const auto n = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
                                                MPI_COMM_WORLD);
-  prm.nonlinear_solver = fem::FemParameters::NonlinearSolver::kinsol;
+  prm.nonlinear.solver = fem::FemParameters::Nonlinear::Solver::kinsol;
   const auto k = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
                                                MPI_COMM_WORLD);
   ASSERT_GE(n.rcurve.size(), 10u);
@@ -295,13 +295,13 @@ TEST_F(FemMpi, TwoRanksGiveTheOneRankRCurve3D) {
   const auto spec = short_dcb();
   const auto law = pva_control();
   auto prm = distributed_parameters();
-  prm.dimension = 3;
-  prm.width_elements = 2;
-  prm.element_size = 4 * mm;
+  prm.mesh.dimension = 3;
+  prm.mesh.width_elements = 2;
+  prm.mesh.element_size = 4 * mm;
   // Q1: this test compares ranks, not bending accuracy (auto would take Q2 for 4 mm elements on
   // the 10 mm arms, indicator 0.012, and a 3D Q2 run on 2 oversubscribed ranks takes minutes).
-  prm.degree = 1;
-  prm.steady_state_window = 8 * mm;
+  prm.mesh.degree = 1;
+  prm.steady_state.window = 8 * mm;
   const auto r1 = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
                                                 MPI_COMM_SELF);
   const auto r2 = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},

@@ -12,7 +12,8 @@ TEST(FemNumericalFault, NanFromTheLawStopsTheRunNamingModelStepAndQuantity) {
   const test::NanPastOpeningLaw law;
   test::expect_nan_diagnosis("fem", [&] {
     fem::FemParameters prm;
-    prm.element_size = 2 * units::mm; // coarse: the zone opens past 0.1 mm at the first advances
+    prm.mesh.element_size =
+        2 * units::mm; // coarse: the zone opens past 0.1 mm at the first advances
     fem::simulate_dcb(fem_test::short_dcb(), specimen::Material{}, law, 200, prm);
   });
 }

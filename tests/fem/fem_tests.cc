@@ -108,8 +108,8 @@ TEST(FemDcb, LefmFollowsCorrectedBeamTheory) {
   const specimen::Material wood;
   const double j_tip = 200;
   fem::FemParameters prm;
-  prm.element_size = 1 * mm;
-  prm.steady_state_window = 8 * mm;
+  prm.mesh.element_size = 1 * mm;
+  prm.steady_state.window = 8 * mm;
   const auto r = fem::simulate_dcb(spec, wood, law::NoBridgingLaw(), j_tip, prm);
   print(r);
   ASSERT_GE(r.rcurve.size(), 8u);
@@ -124,7 +124,7 @@ TEST(FemDcb, LefmFollowsCorrectedBeamTheory) {
         << "a = " << p.a / mm << " mm";
     // Tip J is the criterion (within its tolerance); the far-field J measures the same
     // energy release rate on another domain: path independence, measured 0.07 %.
-    EXPECT_NEAR(p.J_tip / j_tip, 1.0, prm.tip_tolerance);
+    EXPECT_NEAR(p.J_tip / j_tip, 1.0, prm.nonlinear.tip_tolerance);
     EXPECT_NEAR(p.R_J / j_tip, 1.0, 0.005);
     EXPECT_DOUBLE_EQ(p.R_eq2, j_tip);
     if (std::isfinite(p.R_energy)) {
@@ -145,10 +145,10 @@ TEST(FemDcb, LefmQuadraticElements) {
   const auto spec = short_dcb();
   const specimen::Material wood;
   fem::FemParameters prm;
-  prm.degree = 2;
-  prm.element_size = 2 * mm;
-  prm.tip_domain_elements = 2;
-  prm.steady_state_window = 8 * mm;
+  prm.mesh.degree = 2;
+  prm.mesh.element_size = 2 * mm;
+  prm.j_domain.half_width_elements = 2;
+  prm.steady_state.window = 8 * mm;
   const auto r = fem::simulate_dcb(spec, wood, law::NoBridgingLaw(), 200, prm);
   print(r);
   ASSERT_GE(r.rcurve.size(), 4u);
@@ -177,8 +177,8 @@ struct LinearSofteningRun {
   fem::FemRunDetails details;
   result::SimulationResult result;
   LinearSofteningRun() {
-    prm.element_size = 1 * mm;
-    prm.steady_state_window = 8 * mm;
+    prm.mesh.element_size = 1 * mm;
+    prm.steady_state.window = 8 * mm;
     result = fem::simulate_dcb(spec, wood, law, j_tip, prm,
                                std::getenv("FEMOUT") ? std::getenv("FEMOUT") : "", {}, details);
   }
@@ -225,9 +225,9 @@ TEST(FemDcb, TipJAndEq1) {
     const auto& p = r.rcurve[i];
     // Advances at fixed opening (unstable) may exceed J_tip; all others are at J_tip within
     // the secant tolerance.
-    EXPECT_GE(p.J_tip, (1 - run.prm.tip_tolerance) * run.j_tip);
+    EXPECT_GE(p.J_tip, (1 - run.prm.nonlinear.tip_tolerance) * run.j_tip);
     if (run.details.unstable_advances == 0) {
-      EXPECT_LE(p.J_tip, (1 + run.prm.tip_tolerance) * run.j_tip);
+      EXPECT_LE(p.J_tip, (1 + run.prm.nonlinear.tip_tolerance) * run.j_tip);
     }
     // Path independence: two domains, one through the arms around the whole zone, one a strip
     // around the tip with the crack-face term: 0.5 % of J_ff.
@@ -262,7 +262,7 @@ TEST(FemDcb, EnergyBalanceCloses) {
     if (i > 0)
       lower += run.details.j_after_release[i] * B * da;
     const double upper =
-        (1 + run.prm.tip_tolerance) * run.j_tip * B * (p.a - run.spec.initial_crack);
+        (1 + run.prm.nonlinear.tip_tolerance) * run.j_tip * B * (p.a - run.spec.initial_crack);
     EXPECT_LE(run.details.tip_dissipated[i], upper + 1e-12) << "a = " << p.a / mm;
     EXPECT_GE(run.details.tip_dissipated[i], lower - 1e-12) << "a = " << p.a / mm;
   }
@@ -280,8 +280,8 @@ TEST(FemDcb, OutputsAndLigamentDiagnosis) {
   specimen::Specimen spec = short_dcb();
   spec.length = 0.080; // 40 mm of ligament; the PVA zone needs well over 100 mm
   fem::FemParameters prm;
-  prm.element_size = 2 * mm;
-  prm.output_every = 5;
+  prm.mesh.element_size = 2 * mm;
+  prm.output.vtu_every = 5;
   const auto r =
       fem::simulate_dcb(spec, specimen::Material(), pva_control(), 200, prm, dir.string());
   EXPECT_FALSE(r.reached_steady_state);
@@ -302,10 +302,10 @@ TEST(FemDcb, OutputsAndLigamentDiagnosis) {
 
 TEST(FemParameters, RejectsBadValues) {
   fem::FemParameters prm;
-  prm.degree = 3;
+  prm.mesh.degree = 3;
   EXPECT_THROW(prm.validate(), InputError);
   prm = fem::FemParameters();
-  prm.element_size = 0;
+  prm.mesh.element_size = 0;
   EXPECT_THROW(fem::simulate_dcb(short_dcb(), specimen::Material(), law::NoBridgingLaw(), 200, prm),
                InputError);
   prm = fem::FemParameters();
@@ -330,8 +330,8 @@ TEST(FemDcb, RigidLawIsInsertedExtrinsicallyWithoutALastingError) {
   // (path dependence of the FE J, integration of the tractions over the zone).
   const auto spec = short_dcb();
   fem::FemParameters prm;
-  prm.element_size = 1 * mm;
-  prm.steady_state_window = 8 * mm;
+  prm.mesh.element_size = 1 * mm;
+  prm.steady_state.window = 8 * mm;
   const double sc = 1000 * kPa, dc = 0.4 * mm, j_tip = 200;
   const auto law = law::make_linear_softening(sc, dc);
   const auto r = fem::simulate_dcb(spec, specimen::Material(), law, j_tip, prm);
@@ -358,7 +358,7 @@ TEST(FemDcb, RigidLawIsInsertedExtrinsicallyWithoutALastingError) {
 TEST(FemDcb, PlaneStrainReducesToPlaneStressWithoutPoissonCoupling) {
   const auto spec = short_dcb();
   fem::FemParameters prm;
-  prm.steady_state_window = 4 * mm;
+  prm.steady_state.window = 4 * mm;
   specimen::Material stress;
   specimen::Material strain = stress;
   strain.plane_stress = false;
@@ -382,7 +382,7 @@ TEST(FemDcb, PlaneStrainReducesToPlaneStressWithoutPoissonCoupling) {
 // iteration per solve cannot follow the trilinear law's branch changes. `solver_phrase` is what
 // the diagnosis must say about the solver that gave up.
 void expect_diagnosed_failure(fem::FemParameters prm, const std::string& solver_phrase) {
-  prm.max_newton_iterations = 1;
+  prm.nonlinear.max_newton_iterations = 1;
   try {
     fem::simulate_dcb(short_dcb(), specimen::Material(), pva_control(), 200, prm);
     FAIL() << "expected a ComputationError";
@@ -404,9 +404,9 @@ TEST(FemDcb, NewtonFailureIsDiagnosed) {
 // agree to 1e-8 relative (a systematic difference, e.g. a stale factorization, shows as 1e-4).
 TEST(FemDcb, KluAndMumpsGiveTheSameRCurve) {
   const auto& run = linear_softening();
-  ASSERT_EQ(run.prm.linear_solver, fem::FemParameters::LinearSolver::klu); // the default
+  ASSERT_EQ(run.prm.linear.solver, fem::FemParameters::Linear::Solver::klu); // the default
   fem::FemParameters prm = run.prm;
-  prm.linear_solver = fem::FemParameters::LinearSolver::mumps;
+  prm.linear.solver = fem::FemParameters::Linear::Solver::mumps;
   const auto r = fem::simulate_dcb(run.spec, run.wood, run.law, run.j_tip, prm);
   const auto& k = run.result;
   ASSERT_TRUE(k.reached_steady_state && r.reached_steady_state);
@@ -437,9 +437,9 @@ TEST(FemDcb, KluAndMumpsGiveTheSameRCurve) {
 // both solvers take the same full Newton steps here.)
 TEST(FemDcb, KinsolAgreesWithNewton) {
   const auto& run = linear_softening();
-  ASSERT_EQ(run.prm.nonlinear_solver, fem::FemParameters::NonlinearSolver::newton);
+  ASSERT_EQ(run.prm.nonlinear.solver, fem::FemParameters::Nonlinear::Solver::newton);
   fem::FemParameters prm = run.prm;
-  prm.nonlinear_solver = fem::FemParameters::NonlinearSolver::kinsol;
+  prm.nonlinear.solver = fem::FemParameters::Nonlinear::Solver::kinsol;
   const auto r = fem::simulate_dcb(run.spec, run.wood, run.law, run.j_tip, prm);
   const auto& n = run.result;
   ASSERT_TRUE(r.reached_steady_state);
@@ -463,7 +463,7 @@ TEST(FemDcb, KinsolAgreesWithNewton) {
 // without an error.
 TEST(FemDcb, KinsolFailureIsDiagnosed) {
   fem::FemParameters prm;
-  prm.nonlinear_solver = fem::FemParameters::NonlinearSolver::kinsol;
+  prm.nonlinear.solver = fem::FemParameters::Nonlinear::Solver::kinsol;
   expect_diagnosed_failure(prm, "KINSOL returned after");
 }
 
@@ -474,17 +474,17 @@ TEST(FemParameters, SolverChoices) {
   fem::FemParameters::declare_parameters(prm);
   fem::FemParameters p;
   p.parse_parameters(prm);
-  EXPECT_EQ(p.linear_solver, fem::FemParameters::LinearSolver::klu);
-  EXPECT_EQ(p.nonlinear_solver, fem::FemParameters::NonlinearSolver::newton);
+  EXPECT_EQ(p.linear.solver, fem::FemParameters::Linear::Solver::klu);
+  EXPECT_EQ(p.nonlinear.solver, fem::FemParameters::Nonlinear::Solver::newton);
   // umfpack: a deprecated alias of klu (issue 14), noted.
   prm.parse_input_from_string("set Linear solver = umfpack\nset Nonlinear solver = kinsol\n");
   p.parse_parameters(prm);
-  EXPECT_EQ(p.linear_solver, fem::FemParameters::LinearSolver::klu);
+  EXPECT_EQ(p.linear.solver, fem::FemParameters::Linear::Solver::klu);
   EXPECT_EQ(p.deprecation_notes.size(), 1u);
-  EXPECT_EQ(p.nonlinear_solver, fem::FemParameters::NonlinearSolver::kinsol);
+  EXPECT_EQ(p.nonlinear.solver, fem::FemParameters::Nonlinear::Solver::kinsol);
   // mumps and cg_amg (issue 6); anything else is rejected by the pattern.
   prm.parse_input_from_string("set Linear solver = mumps\n");
   p.parse_parameters(prm);
-  EXPECT_EQ(p.linear_solver, fem::FemParameters::LinearSolver::mumps);
+  EXPECT_EQ(p.linear.solver, fem::FemParameters::Linear::Solver::mumps);
   EXPECT_ANY_THROW(prm.parse_input_from_string("set Linear solver = pardiso\n"));
 }

@@ -29,9 +29,9 @@ TEST(RecordFromFem, ReduceRecoversTheFemEnergyRCurve) {
   const specimen::Material m = thin_dcb_case::material();
   const law::TrilinearParameters p = thin_dcb_case::bridging();
   fem::FemParameters prm;
-  prm.element_size = 1.0 * mm; // 82 advances over 81 mm; Q2 by auto (9.5 s CPU)
+  prm.mesh.element_size = 1.0 * mm; // 82 advances over 81 mm; Q2 by auto (9.5 s CPU)
 
-  prm.steady_state_window = 1.0;
+  prm.steady_state.window = 1.0;
   const auto t0 = std::chrono::steady_clock::now();
   auto sim = fem::simulate_dcb(s, m, law::make_trilinear(p), thin_dcb_case::j_tip, prm);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -53,12 +53,12 @@ TEST(FemThinArm, MeshFollowsTheArm) {
   fem::FemParameters prm; // defaults: 2 mm, 4 layers, grading 1.3
   const auto thin = fem::dcb_mesh_lines(thin_dcb_case::specimen(), prm);
   const double h = thin_dcb_case::specimen().arm_thickness();
-  EXPECT_GE(thin.y.size() - 1, prm.min_layers);
-  EXPECT_NEAR(thin.first_layer, h / prm.min_layers, 1e-12);
+  EXPECT_GE(thin.y.size() - 1, prm.mesh.min_layers);
+  EXPECT_NEAR(thin.first_layer, h / prm.mesh.min_layers, 1e-12);
   EXPECT_LE(thin.dx / thin.first_layer, fem::kMaxCrackPlaneAspect);
   EXPECT_DOUBLE_EQ(thin.y.back(), h);
   for (std::size_t j = 1; j < thin.y.size(); ++j)
-    EXPECT_LE(thin.y[j] - thin.y[j - 1], h / prm.min_layers * (1 + 1e-12));
+    EXPECT_LE(thin.y[j] - thin.y[j - 1], h / prm.mesh.min_layers * (1 + 1e-12));
 
   // The seed's 17.5 mm arms: square 2 mm elements at the crack plane as before (the seed figures
   // of docs/verification.md are measured on this mesh).
@@ -76,7 +76,7 @@ TEST(FemThinArm, MeshFollowsTheArm) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("FEM/Element size"), std::string::npos) << e.what();
   }
-  prm.element_size = 0.25 * mm; // 4 x 0.25 mm layers: square
+  prm.mesh.element_size = 0.25 * mm; // 4 x 0.25 mm layers: square
   EXPECT_NO_THROW(fem::dcb_mesh_lines(very_thin, prm));
 }
 
@@ -91,7 +91,7 @@ TEST(FemThinArm, DegreeFollowsTheArm) {
             2u);
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_EQ(notes[0].rfind("FEM/Polynomial degree = auto chose Q2", 0), 0u) << notes[0];
-  prm.degree = 1;
+  prm.mesh.degree = 1;
   notes.clear();
   EXPECT_EQ(fem::resolve_degree(thin_dcb_case::specimen(), thin_dcb_case::material(), prm, notes),
             1u);
@@ -115,7 +115,7 @@ result::SimulationResult composite_lefm(fem::FemParameters prm, double j_tip = k
 // for a wrong bending stiffness (Q1 at 2 mm is 8 % off).
 TEST(FemThinArm, LefmCompositeFollowsCbtOnDefaults) {
   fem::FemParameters prm;
-  prm.steady_state_window = 4 * mm;
+  prm.steady_state.window = 4 * mm;
   const auto r = composite_lefm(prm);
   print(r);
   ASSERT_TRUE(r.reached_steady_state);
@@ -161,7 +161,7 @@ TEST(FemThinArm, EpiBridgingOnThreeMillimetreArms) {
 // the run says so in its notes (at the default 500 J/m^2 it does not: see above).
 TEST(FemThinArm, SmallStrainRunSaysWhenRotationsAreLarge) {
   fem::FemParameters prm;
-  prm.steady_state_window = 2 * mm;
+  prm.steady_state.window = 2 * mm;
   const auto r = composite_lefm(prm, 5000);
   ASSERT_FALSE(r.rcurve.empty());
   const auto& p = r.rcurve.front();
@@ -177,10 +177,10 @@ TEST(FemThinArm, SmallStrainRunSaysWhenRotationsAreLarge) {
 // reaction moves the load by about that much).
 TEST(FemThinArm, RefinedCompositeConvergesWithBothSolvers) {
   fem::FemParameters prm;
-  prm.element_size = 1 * mm;
-  prm.steady_state_window = 2 * mm;
+  prm.mesh.element_size = 1 * mm;
+  prm.steady_state.window = 2 * mm;
   const auto newton = composite_lefm(prm);
-  prm.nonlinear_solver = fem::FemParameters::NonlinearSolver::kinsol;
+  prm.nonlinear.solver = fem::FemParameters::Nonlinear::Solver::kinsol;
   const auto kinsol = composite_lefm(prm);
   ASSERT_TRUE(newton.reached_steady_state && kinsol.reached_steady_state);
   ASSERT_EQ(newton.rcurve.size(), kinsol.rcurve.size());
@@ -204,10 +204,10 @@ TEST(FemThinArm, RefinementLadderConvergesMonotonically) {
   std::vector<double> loads;
   for (const double size : {2.0, 1.0, 0.5}) {
     fem::FemParameters prm;
-    prm.degree = 2;
-    prm.element_size = size * mm;
-    prm.tip_tolerance = 1e-7;
-    prm.steady_state_window = 1e-6 * mm; // stop two advances after initiation
+    prm.mesh.degree = 2;
+    prm.mesh.element_size = size * mm;
+    prm.nonlinear.tip_tolerance = 1e-7;
+    prm.steady_state.window = 1e-6 * mm; // stop two advances after initiation
     const auto r = composite_lefm(prm);
     ASSERT_FALSE(r.rcurve.empty());
     ASSERT_DOUBLE_EQ(r.rcurve.front().a, thin_dcb_case::specimen().initial_crack);

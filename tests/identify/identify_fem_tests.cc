@@ -34,8 +34,8 @@ TEST(IdentifyFromFem, RecoversTheLawsToughnessAndStresses) {
   const law::TrilinearParameters truth{0.05 * mm, 700 * kPa, 1.5 * mm, 100 * kPa, 4 * mm};
   const double j_tip = 400;
   fem::FemParameters fp;
-  fp.element_size = 0.5 * mm; // 5.4 elements per arm thickness; G_ss within 0.2 % of the law
-  fp.max_opening_increment = 0.2 * mm;
+  fp.mesh.element_size = 0.5 * mm; // 5.4 elements per arm thickness; G_ss within 0.2 % of the law
+  fp.nonlinear.max_opening_increment = 0.2 * mm;
   const auto run = fem::simulate_dcb(record_specimen(), record_material(25e9),
                                      law::make_trilinear(truth), j_tip, fp);
   ASSERT_TRUE(run.reached_steady_state);
@@ -87,9 +87,9 @@ TEST(IdentifyFromFem, ThreeRoutesWithDeltaRoot) {
   const auto truth_law = law::make_trilinear(truth);
   const double j_tip = 400;
   fem::FemParameters fp;
-  fp.element_size = 0.5 * mm; // as above
-  fp.max_opening_increment = 0.2 * mm;
-  fp.steady_state_window = 30 * mm; // on past the onset: a long plateau in R(a)
+  fp.mesh.element_size = 0.5 * mm; // as above
+  fp.nonlinear.max_opening_increment = 0.2 * mm;
+  fp.steady_state.window = 30 * mm; // on past the onset: a long plateau in R(a)
   const auto run =
       fem::simulate_dcb(record_specimen(), record_material(25e9), truth_law, j_tip, fp);
   ASSERT_TRUE(run.reached_steady_state);

@@ -91,7 +91,7 @@ inline constexpr double kQ1LoadErrorPerIndicator = 1.3;
 /// takes Q2.
 inline constexpr double kQ1BendingBound = 0.004;
 
-/// The polynomial degree of the run: FemParameters::degree, or for 0 (auto) Q2 where Q1 would
+/// The polynomial degree of the run: FemParameters::Mesh::degree, or for 0 (auto) Q2 where Q1 would
 /// lock in bending (indicator above kQ1BendingBound) and Q1 elsewhere; notes the choice, and a
 /// forced Q1 past the bound.
 unsigned resolve_degree(const specimen::Specimen& specimen, const specimen::Material& material,

@@ -22,57 +22,131 @@ class ParameterHandler;
 
 namespace fiberbridge::fem {
 
-/// The "FEM" section of a scene (step-44 pattern; the caller enters the subsection).
-/// Plane stress/strain comes from the Material section.
+/// The "FEM" section of a scene (step-44's AllParameters pattern; the caller enters the
+/// subsection). Each group declares, parses and validates its own keys; all keys stay directly in
+/// the FEM section (scenes name them FEM/<key>). Plane stress/strain comes from the Material
+/// section.
 struct FemParameters {
-  /// Along the crack plane = tip advance per release [m]. On the seed DCB with the PVA control
-  /// law, 2 mm gives G_ss and R_J within 0.1 % of the law's values.
-  double element_size = 2.0e-3;
-  double grading = 1.3;        ///< growth ratio of element heights away from the crack plane
-  unsigned int min_layers = 4; ///< at least this many layers per arm (heights <= h/min_layers)
-  /// Polynomial degree of the FE_Q displacement elements; 0: auto (Q2 where Q1 would lock in
-  /// bending on thin arms, fem::resolve_degree in dcb_common.h).
-  unsigned int degree = 0;
-  /// Sub-intervals of the composite Lobatto rule on each crack-plane element (1: nodal rule).
-  unsigned int interface_subintervals = 4;
-  double max_opening_increment = 0.5e-3; ///< load-point opening per nonlinear solve [m]
-  double tip_tolerance = 1e-3;           ///< |J_tip/J_tip,c - 1| accepted at an advance
-  double newton_tolerance = 1e-9;        ///< residual relative to the load-line reaction
-  unsigned int max_newton_iterations = 25;
-  /// Solver of the condensed Jacobian systems. The direct solvers factorize once per release
-  /// and take the interface points that change branch in between as a low-rank (Woodbury)
-  /// update (FEM/Linear solver = umfpack is a deprecated alias of klu).
-  enum class LinearSolver {
-    klu,   ///< Trilinos Amesos KLU (on several ranks the matrix is gathered on one)
-    mumps, ///< Trilinos Amesos MUMPS, distributed
-    cg_amg ///< CG + Trilinos ML AMG on an SPD (secant) Jacobian
-  };
-  LinearSolver linear_solver = LinearSolver::klu;
-  /// Nonlinear solver of one equilibrium. Both use the exact Jacobian, a line search and the
-  /// same convergence test (`newton_tolerance`, `max_newton_iterations`).
-  enum class NonlinearSolver {
-    newton, ///< own Newton with backtracking line search on the condensed residual
-    kinsol  ///< SUNDIALS KINSOL, line-search strategy; its result is re-checked here
-  };
-  NonlinearSolver nonlinear_solver = NonlinearSolver::newton;
-  double contact_stiffness_factor = 10;   ///< contact penalty = factor * E_T / element size
-  double rigid_law_stiffness_factor = 10; ///< unused: rigid laws are inserted extrinsically
-  unsigned int tip_domain_elements = 4;   ///< half-width of the tip J domain in elements
-  double steady_state_window = 10e-3;     ///< crack growth over which the plateau is judged [m]
-  double plateau_tolerance = 0.01;        ///< relative spread of R_J accepted as a plateau
-  unsigned int output_every = 0;          ///< VTU every N advances (0: only the final state)
-  /// (The out-of-plane E_R, nu_LR, nu_RT of plane strain and 3D are specimen::Material's.)
-  /// 3D shear moduli (Wood Handbook, Douglas-fir: G_LR/E_L = 0.064, G_RT/E_L = 0.007).
-  double G_LR_over_E_L = 0.064;
-  double G_RT_over_E_L = 0.007;
+  /// The mesh and its elements.
+  struct Mesh {
+    /// Along the crack plane = tip advance per release [m]. On the seed DCB with the PVA control
+    /// law, 2 mm gives G_ss and R_J within 0.1 % of the law's values.
+    double element_size = 2.0e-3;
+    double grading = 1.3;        ///< growth ratio of element heights away from the crack plane
+    unsigned int min_layers = 4; ///< at least this many layers per arm (heights <= h/min_layers)
+    /// Polynomial degree of the FE_Q displacement elements; 0: auto (Q2 where Q1 would lock in
+    /// bending on thin arms, fem::resolve_degree in dcb_common.h).
+    unsigned int degree = 0;
+    /// Space dimension of the model: 2 (plane stress/strain) or 3 (the specimen extruded over
+    /// Specimen/Width, free side faces).
+    unsigned int dimension = 2;
+    /// 3D only: element layers across the width (0: width / element size, rounded, at least 1).
+    unsigned int width_elements = 0;
 
-  /// Space dimension of the model: 2 (plane stress/strain) or 3 (the specimen extruded over
-  /// Specimen/Width, free side faces).
-  unsigned int dimension = 2;
-  /// 3D only: element layers across the width (0: width / element size, rounded, at least 1).
-  unsigned int width_elements = 0;
-  /// cg_amg only: CG stops at this residual relative to the right-hand side.
-  double linear_tolerance = 1e-10;
+    static void declare_parameters(dealii::ParameterHandler& prm);
+    void parse_parameters(dealii::ParameterHandler& prm);
+    void validate() const;
+  };
+
+  /// 3D shear moduli (Wood Handbook, Douglas-fir: G_LR/E_L = 0.064, G_RT/E_L = 0.007). A group
+  /// of their own rather than Mesh's: they are elastic constants that complete
+  /// specimen::Material's for 3D (which holds the out-of-plane E_R, nu_LR, nu_RT).
+  struct Elasticity3d {
+    double G_LR_over_E_L = 0.064;
+    double G_RT_over_E_L = 0.007;
+
+    static void declare_parameters(dealii::ParameterHandler& prm);
+    void parse_parameters(dealii::ParameterHandler& prm);
+    void validate() const;
+  };
+
+  /// The cohesive crack plane. (The deprecated, ignored key Rigid law stiffness factor is
+  /// declared here and only leaves a note.)
+  struct Interface {
+    /// Sub-intervals of the composite Lobatto rule on each crack-plane element (1: nodal rule).
+    unsigned int subintervals = 4;
+    double contact_stiffness_factor = 10; ///< contact penalty = factor * E_T / element size
+
+    static void declare_parameters(dealii::ParameterHandler& prm);
+    void parse_parameters(dealii::ParameterHandler& prm, std::vector<std::string>& notes);
+    void validate() const;
+  };
+
+  /// The load stepping and the equilibrium solves.
+  struct Nonlinear {
+    double max_opening_increment = 0.5e-3; ///< load-point opening per nonlinear solve [m]
+    double tip_tolerance = 1e-3;           ///< |J_tip/J_tip,c - 1| accepted at an advance
+    double newton_tolerance = 1e-9;        ///< residual relative to the load-line reaction
+    unsigned int max_newton_iterations = 25;
+    /// Nonlinear solver of one equilibrium. Both use the exact Jacobian, a line search and the
+    /// same convergence test (`newton_tolerance`, `max_newton_iterations`).
+    enum class Solver {
+      newton, ///< own Newton with backtracking line search on the condensed residual
+      kinsol  ///< SUNDIALS KINSOL, line-search strategy; its result is re-checked here
+    };
+    Solver solver = Solver::newton;
+
+    static void declare_parameters(dealii::ParameterHandler& prm);
+    void parse_parameters(dealii::ParameterHandler& prm);
+    void validate() const;
+  };
+
+  /// The Jacobian systems. (The deprecated, ignored key Engine is declared here: it chose the
+  /// solver stack.)
+  struct Linear {
+    /// Solver of the condensed Jacobian systems. The direct solvers factorize once per release
+    /// and take the interface points that change branch in between as a low-rank (Woodbury)
+    /// update (FEM/Linear solver = umfpack is a deprecated alias of klu).
+    enum class Solver {
+      klu,   ///< Trilinos Amesos KLU (on several ranks the matrix is gathered on one)
+      mumps, ///< Trilinos Amesos MUMPS, distributed
+      cg_amg ///< CG + Trilinos ML AMG on an SPD (secant) Jacobian
+    };
+    Solver solver = Solver::klu;
+    /// cg_amg only: CG stops at this residual relative to the right-hand side.
+    double tolerance = 1e-10;
+
+    static void declare_parameters(dealii::ParameterHandler& prm);
+    void parse_parameters(dealii::ParameterHandler& prm, std::vector<std::string>& notes);
+    void validate() const;
+  };
+
+  /// The tip J domain integral.
+  struct JDomain {
+    unsigned int half_width_elements = 4; ///< half-width of the tip J domain in elements
+
+    static void declare_parameters(dealii::ParameterHandler& prm);
+    void parse_parameters(dealii::ParameterHandler& prm);
+    void validate() const;
+  };
+
+  /// When the run stops: the steady-state rule shared by every model
+  /// (result::find_steady_state), under the same key names in the Beam, FEM and MPM sections.
+  struct SteadyState {
+    double window = 10e-3;           ///< crack growth over which the plateau is judged [m]
+    double plateau_tolerance = 0.01; ///< relative spread of R_J accepted as a plateau
+
+    static void declare_parameters(dealii::ParameterHandler& prm);
+    void parse_parameters(dealii::ParameterHandler& prm, std::vector<std::string>& notes);
+    void validate() const;
+  };
+
+  /// Field output.
+  struct Output {
+    unsigned int vtu_every = 0; ///< VTU every N advances (0: only the final state)
+
+    static void declare_parameters(dealii::ParameterHandler& prm);
+    void parse_parameters(dealii::ParameterHandler& prm);
+  };
+
+  Mesh mesh;
+  Elasticity3d elasticity_3d;
+  Interface interface;
+  Nonlinear nonlinear;
+  Linear linear;
+  JDomain j_domain;
+  SteadyState steady_state;
+  Output output;
 
   /// Notes for the run on deprecated keys met by parse_parameters (FEM/Engine, umfpack).
   std::vector<std::string> deprecation_notes;
