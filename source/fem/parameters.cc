@@ -157,8 +157,10 @@ void FemParameters::Linear::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Linear tolerance", "1e-10", Double(0, 1),
                     "cg_amg only: CG stops at this residual relative to the right-hand side.");
   prm.declare_entry("Engine", "auto", dealii::Patterns::Selection("auto|serial|distributed"),
-                    "Deprecated and ignored: there is one engine (p4est + Trilinos, serial on "
-                    "one rank); a value other than auto leaves a note in the run's notes.");
+                    "Deprecated: there is one engine (p4est + Trilinos, serial on one rank); a "
+                    "value other than auto leaves a note in the run's notes. What is left of "
+                    "it: distributed keeps the FEM one run over all ranks in a scene of several "
+                    "simulations under mpirun (as Dimension = 3 does; docs/cluster.md).");
 }
 
 void FemParameters::Linear::parse_parameters(dealii::ParameterHandler& prm,
@@ -170,10 +172,14 @@ void FemParameters::Linear::parse_parameters(dealii::ParameterHandler& prm,
     notes.push_back("FEM/Linear solver = umfpack is deprecated: ran klu (the one "
                     "engine's direct solvers are klu and mumps)");
   tolerance = prm.get_double("Linear tolerance");
-  if (prm.get("Engine") != "auto")
-    notes.push_back("FEM/Engine = " + prm.get("Engine") +
-                    " is deprecated and ignored: one engine (p4est + Trilinos) runs "
-                    "on any number of ranks");
+  const std::string engine = prm.get("Engine");
+  if (engine != "auto")
+    notes.push_back("FEM/Engine = " + engine +
+                    " is deprecated: one engine (p4est + Trilinos) runs on any number of ranks" +
+                    (engine == "distributed"
+                         ? " (in a scene of several simulations under mpirun it still keeps the "
+                           "FEM one run over all ranks, docs/cluster.md)"
+                         : std::string(", the value is ignored")));
 }
 
 void FemParameters::Linear::validate() const {

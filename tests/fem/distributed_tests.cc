@@ -210,7 +210,8 @@ TEST(FemDistributed, OldSteadyStateWindowKeyIsMappedWithANote) {
 }
 
 // FEM/Engine and Linear solver = umfpack are deprecated (one engine, issue 14): still accepted
-// by scenes, ignored, and said so in the run's notes.
+// by scenes and said so in the run's notes (docs/cluster.md: what Engine = distributed still
+// does in a scene of several simulations).
 TEST(FemDistributed, DeprecatedEngineKeysAreNoted) {
   dealii::ParameterHandler handler;
   fem::FemParameters::declare_parameters(handler);

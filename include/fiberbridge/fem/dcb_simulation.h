@@ -91,8 +91,8 @@ struct FemParameters {
     void validate() const;
   };
 
-  /// The Jacobian systems. (The deprecated, ignored key Engine is declared here: it chose the
-  /// solver stack.)
+  /// The Jacobian systems. (The deprecated key Engine is declared here: it chose the solver
+  /// stack; app/simulation_tasks.cc still reads its value distributed, docs/cluster.md.)
   struct Linear {
     /// Solver of the condensed Jacobian systems. The direct solvers factorize once per release
     /// and take the interface points that change branch in between as a low-rank (Woodbury)
