@@ -2,12 +2,11 @@
 // the simulation with the scene's specimen, material, law and J_tip, and reports through the common
 // simulation writer.
 //
-// Engines (FEM/Engine, issue 6): the serial 2D engine (simulate_dcb) or the distributed 2D/3D
-// engine (simulate_dcb_distributed) on all ranks of simulation_communicator(): MPI_COMM_WORLD, or
-// MPI_COMM_SELF when the run is one task of several spread over the ranks (task_distributor.h;
-// then the 2D FEM takes the serial engine). Under mpirun every rank of that communicator runs
-// this item (the distributed engine is collective); only its rank 0 prints progress, and the
-// file writers are switched off on the ranks that do not write (core/output_guard.h).
+// One engine (docs/design.md section 2): simulate_dcb_distributed on all ranks of
+// simulation_communicator(): MPI_COMM_WORLD, or MPI_COMM_SELF when the run is one task of several
+// spread over the ranks (task_distributor.h). Under mpirun every rank of that communicator runs
+// this item (the engine is collective); only its rank 0 prints progress, and the file writers are
+// switched off on the ranks that do not write (core/output_guard.h).
 #include "fiberbridge/app/scene_context.h"
 #include "fiberbridge/app/section.h"
 #include "fiberbridge/app/task_distributor.h"
@@ -37,35 +36,30 @@ void run_fem_item(SceneContext& ctx) {
   const MPI_Comm comm = simulation_communicator();
   const unsigned n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
   const bool rank0 = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-  const bool distributed = fem::use_distributed_engine(params, n_ranks);
   std::function<void(const std::string&)> progress;
   if (rank0)
     progress = [](const std::string& line) { std::cerr << line << '\n'; };
-  result::SimulationResult result;
   fem::DistributedRunInfo info;
-  if (distributed)
-    result = fem::simulate_dcb_distributed(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(),
-                                           params, ctx.output_dir, progress, comm, &info);
-  else
-    result = fem::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params,
-                               ctx.output_dir, progress);
+  result::SimulationResult result =
+      fem::simulate_dcb_distributed(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params,
+                                    ctx.output_dir, progress, comm, &info);
   report_simulation(ctx, std::move(result), "n_dofs");
   auto& block = ctx.summary["fem"];
-  block["engine"] = distributed ? "distributed" : "serial";
-  block["n_ranks"] = distributed ? n_ranks : 1u;
+  // summary.json keeps the keys of the time there were two engines: "engine" is "distributed",
+  // the name the one engine had then (FEM/Engine is deprecated, parameters.cc).
+  block["engine"] = "distributed";
+  block["n_ranks"] = n_ranks;
   block["dimension"] = params.mesh.dimension;
-  if (distributed) {
-    block["n_cells"] = info.n_cells;
-    block["peak_memory_MB_all_ranks"] = info.peak_memory_MB_sum;
-    block["peak_memory_MB_max_rank"] = info.peak_memory_MB_max;
-    block["memory_MB_per_million_dofs"] =
-        info.n_dofs > 0 ? info.peak_memory_MB_sum / (double(info.n_dofs) / 1e6) : 0.0;
-    block["time_breakdown_s"] = {{"setup", info.t_setup},         {"assembly", info.t_assemble},
-                                 {"factorize", info.t_factorize}, {"solve", info.t_solve},
-                                 {"J_integrals", info.t_j},       {"output", info.t_output}};
-    block["factorizations"] = info.n_factorizations;
-    block["newton_iterations"] = info.n_newton;
-  }
+  block["n_cells"] = info.n_cells;
+  block["peak_memory_MB_all_ranks"] = info.peak_memory_MB_sum;
+  block["peak_memory_MB_max_rank"] = info.peak_memory_MB_max;
+  block["memory_MB_per_million_dofs"] =
+      info.n_dofs > 0 ? info.peak_memory_MB_sum / (double(info.n_dofs) / 1e6) : 0.0;
+  block["time_breakdown_s"] = {{"setup", info.t_setup},         {"assembly", info.t_assemble},
+                               {"factorize", info.t_factorize}, {"solve", info.t_solve},
+                               {"J_integrals", info.t_j},       {"output", info.t_output}};
+  block["factorizations"] = info.n_factorizations;
+  block["newton_iterations"] = info.n_newton;
 }
 
 } // namespace fiberbridge::app

@@ -18,10 +18,6 @@ result::SimulationResult run_distributed(const specimen::Specimen&, const specim
                                          DistributedRunInfo&, FemRunDetails&);
 } // namespace distributed
 
-bool use_distributed_engine(const FemParameters&, unsigned) {
-  return true;
-}
-
 result::SimulationResult
 simulate_dcb_distributed(const specimen::Specimen& specimen, const specimen::Material& material,
                          const law::TractionLaw& law, double j_tip, const FemParameters& parameters,

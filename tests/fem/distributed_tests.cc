@@ -220,7 +220,6 @@ TEST(FemDistributed, DeprecatedEngineKeysAreNoted) {
   p.parse_parameters(handler);
   EXPECT_EQ(p.linear.solver, fem::FemParameters::Linear::Solver::klu);
   ASSERT_EQ(p.deprecation_notes.size(), 2u);
-  EXPECT_TRUE(fem::use_distributed_engine(p, 1));
   const auto r = fem::simulate_dcb(short_dcb(), specimen::Material(), short_trilinear(), 200, p);
   unsigned noted = 0;
   for (const auto& n : r.notes)

@@ -32,9 +32,6 @@ struct DistributedRunInfo {
   double t_setup = 0, t_assemble = 0, t_factorize = 0, t_solve = 0, t_j = 0, t_output = 0;
 };
 
-/// Kept for the app (FEM/Engine is deprecated): there is one engine, so always true.
-bool use_distributed_engine(const FemParameters& parameters, unsigned n_ranks);
-
 /// Runs the model of simulate_dcb() on the ranks of `comm` (every rank calls it and gets the
 /// same result). Output (VTU pieces per rank + .pvtu + .pvd, fem_interface.csv) goes to
 /// `output_dir` unless empty; only rank 0 writes the shared files. `progress` is called on
