@@ -4,7 +4,7 @@
 #   default  the 5 mm default-scene MPM (prm/default.prm: extract and fit, then the fitted law in
 #            the MPM; the model's own wall time is read, without the extraction),
 #   pva      the seed PVA control scene at CELL mm cells, shortened to the first END_MM mm of
-#            growth (MPM/End ligament), or the whole R curve with END_MM = full.
+#            growth (MPM/Minimum ligament), or the whole R curve with END_MM = full.
 # Prints per run the model wall time, the whole process's user CPU time, particle-steps per
 # second, the G_ss error against J_tip + law area and R_J against Eq. 2 (n/a when a shortened run
 # has no steady state), then the median ratios new/old of the wall and of the CPU time (on cores
@@ -45,6 +45,8 @@ run_one() { # binary case out
       --set "Run=extract, fit, mpm" "${sets[@]}") > "$out.log" 2>&1
   else
     local -a len=()
+    # MPM/End ligament, the old name of MPM/Minimum ligament: the OLD binary may predate the
+    # rename, and newer binaries still accept it (with a deprecation note).
     [ "$end" != full ] && len=(--set "MPM/End ligament=$end")
     (cd "$root/prm" && /usr/bin/time -f %U -o "$out.cpu" "$bin" run mpm_pva_control.prm \
       --set "Run=mpm" --set "MPM/Cell size=$cell" "${len[@]}" "${sets[@]}") > "$out.log" 2>&1

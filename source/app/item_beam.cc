@@ -3,6 +3,7 @@
 #include "fiberbridge/app/scene_context.h"
 #include "fiberbridge/app/section.h"
 #include "fiberbridge/beam/dcb_beam.h"
+#include "fiberbridge/core/renamed_key.h"
 #include "fiberbridge/core/units.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -60,8 +61,12 @@ void BeamSection::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Newton tolerance", default_text(d.newton_tolerance), Double(0, 0.01),
                     "Relative residual (to the initiation load) and relative tip-opening error "
                     "at which Newton stops.");
-  prm.declare_entry("Newton iterations", std::to_string(d.max_newton_iterations), Integer(1, 10000),
-                    "Newton iterations per tip position before giving up.");
+  prm.declare_entry("Maximum Newton iterations", std::to_string(d.max_newton_iterations),
+                    Integer(1, 10000), "Newton iterations per tip position before giving up.");
+  prm.declare_entry("Newton iterations", "", dealii::Patterns::Anything(),
+                    "Deprecated name of Maximum Newton iterations (the FEM's key); still "
+                    "accepted, with a note in the run's notes (an error if both are given and "
+                    "differ).");
   prm.declare_entry("Kinematics", "small", dealii::Patterns::Selection("small|finite"),
                     "small: linear beam theory. finite: the load and the load-point opening "
                     "come from the elastica of the free arm (load line to tip) at the "
@@ -80,7 +85,14 @@ void BeamSection::parse_parameters(dealii::ParameterHandler& prm) {
   steady_state_window = prm.get_double("Steady state window") * mm;
   plateau_tolerance = prm.get_double("Plateau tolerance");
   newton_tolerance = prm.get_double("Newton tolerance");
-  max_newton_iterations = prm.get_integer("Newton iterations");
+  // The old name (the shared renaming rule, core/renamed_key.h): used when given, with a note.
+  const RenamedKey key{"Beam", "Maximum Newton iterations", "Newton iterations"};
+  const std::string text = prm.get(key.name), old_text = prm.get(key.old_name);
+  max_newton_iterations = static_cast<int>(resolve_renamed(
+      key, prm.get_integer(key.name),
+      text != std::to_string(BeamParameters().max_newton_iterations), text,
+      deprecated_number(key, old_text, "a whole number in [1, 10000]", 1, 10000, true), old_text,
+      "the same key as the FEM's", deprecation_notes));
   finite_rotations = prm.get("Kinematics") == "finite";
   validate("Beam");
 }
@@ -90,15 +102,19 @@ void declare_beam_section(dealii::ParameterHandler& prm) {
   declare_section<BeamSection>(prm, "Beam");
 }
 
+beam::BeamParameters read_beam_section(dealii::ParameterHandler& prm) {
+  return parse_section<BeamSection>(prm, "Beam");
+}
+
 void check_beam_item(SceneContext& ctx) {
-  const BeamSection params = parse_section<BeamSection>(*ctx.prm, "Beam");
+  const beam::BeamParameters params = read_beam_section(*ctx.prm);
   ctx.law_known_before_run();
   if (ctx.specimen_from_section())
     beam::check_dcb_inputs(ctx.specimen(), ctx.material(), params);
 }
 
 void run_beam_item(SceneContext& ctx) {
-  const beam::BeamParameters params = parse_section<BeamSection>(*ctx.prm, "Beam");
+  const beam::BeamParameters params = read_beam_section(*ctx.prm);
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
   result::SimulationResult result =
       beam::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params, progress);

@@ -2,6 +2,8 @@
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/scene_context.h"
 #include "fiberbridge/app/section.h"
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/renamed_key.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/mpm/dcb.h"
 #include "fiberbridge/mpm/parameters.h"
@@ -9,6 +11,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/patterns.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 
 namespace fiberbridge::app {
@@ -41,9 +45,14 @@ void MpmSection::declare_parameters(dealii::ParameterHandler& prm) {
                     "corrected beam theory after this many vibration periods of an a0 arm.");
   prm.declare_entry("Ramp periods", std::to_string(d.ramp_periods), Double(0),
                     "The opening rate rises smoothly from zero over this many vibration periods.");
-  prm.declare_entry("Growth step", std::to_string(d.growth_step_cells), Integer(1, 4),
-                    "Tip advance per propagation event, in whole cells: the tip moves from node "
-                    "column to node column (the velocity fields split per node).");
+  prm.declare_entry("Tip advance", "0", Double(0),
+                    "Crack growth per propagation event in mm (the Beam's key), rounded to whole "
+                    "cells, 1 to 4: the tip moves from node column to node column (the velocity "
+                    "fields split per node). 0 = one cell.");
+  prm.declare_entry("Growth step", "", dealii::Patterns::Anything(),
+                    "Deprecated: the tip advance in whole cells (1 to 4); use Tip advance in mm. "
+                    "Still accepted, with a note in the run's notes (an error if both are given "
+                    "and differ).");
   prm.declare_entry(
       "J window periods", std::to_string(d.j_window_periods), Double(0, 1),
       "Growth when the tip J averaged over this many periods of the arm at the current crack "
@@ -56,11 +65,14 @@ void MpmSection::declare_parameters(dealii::ParameterHandler& prm) {
                     "Deprecated and ignored: rigid laws (linear or exponential softening) are "
                     "inserted extrinsically in every model (a new segment starts at sigma(0+)); "
                     "a value leaves a note in the run's notes.");
-  prm.declare_entry("End ligament", "0", Double(0),
+  prm.declare_entry("Minimum ligament", "0", Double(0),
                     "Stop when the ligament ahead of the tip would be shorter than this, in mm; "
-                    "0 = the specimen height.");
+                    "0 = the specimen height (the Beam's key).");
+  prm.declare_entry("End ligament", "", dealii::Patterns::Anything(),
+                    "Deprecated name of Minimum ligament [mm]; still accepted, with a note in the "
+                    "run's notes (an error if both are given and differ).");
   prm.declare_entry("Steady growth", "0", Double(0),
-                    "Stop after the notch root has moved this far in mm (0 = run to the end "
+                    "Stop after the notch root has moved this far in mm (0 = run to the minimum "
                     "ligament).");
   prm.declare_entry("Steady state window", std::to_string(d.steady_state_window / mm), Double(0),
                     "Steady state: after the notch root moved, R_J has stayed within the plateau "
@@ -84,6 +96,27 @@ void MpmSection::declare_parameters(dealii::ParameterHandler& prm) {
                     "--resume` continues from (0 = none).");
 }
 
+/// Tip advance [mm] in whole cells: rounded as the beam rounds it to elements, at least one; 0
+/// (the default) = one cell, whatever the cell size. The old Growth step counted cells.
+int parse_tip_advance(dealii::ParameterHandler& prm, double cell_size,
+                      std::vector<std::string>& notes) {
+  const RenamedKey key{"MPM", "Tip advance", "Growth step"};
+  const std::string text = prm.get(key.name), old_text = prm.get(key.old_name);
+  const double advance = prm.get_double(key.name) * mm;
+  long cells = 1;
+  if (advance > 0 && cell_size > 0) { // a bad cell size is validate()'s to name
+    // Past 4 cells validate() refuses the step anyway; said here so that lround cannot overflow.
+    if (!(advance / cell_size < 4.5))
+      throw InputError("MPM/Tip advance: " + text + " mm is more than 4 cells of " +
+                       prm.get("Cell size") + " mm (the tip advances 1 to 4 whole cells)");
+    cells = std::max(1L, std::lround(advance / cell_size));
+  }
+  return static_cast<int>(resolve_renamed(
+      key, static_cast<double>(cells), text != "0", text,
+      deprecated_number(key, old_text, "a whole number of cells in [1, 4]", 1, 4, true), old_text,
+      "in mm as in the Beam section, rounded to whole cells", notes));
+}
+
 void MpmSection::parse_parameters(dealii::ParameterHandler& prm) {
   cell_size = prm.get_double("Cell size") * mm;
   particles_per_cell = prm.get_integer("Particles per cell");
@@ -91,14 +124,21 @@ void MpmSection::parse_parameters(dealii::ParameterHandler& prm) {
   pic_fraction = prm.get_double("PIC fraction");
   loading_periods = prm.get_double("Loading periods");
   ramp_periods = prm.get_double("Ramp periods");
-  growth_step_cells = prm.get_integer("Growth step");
+  growth_step_cells = parse_tip_advance(prm, cell_size, deprecation_notes);
   j_window_periods = prm.get_double("J window periods");
   tip_j_cells = prm.get_double("Tip J domain");
   if (!prm.get("Rigid law rise fraction").empty())
     deprecation_notes.push_back("MPM/Rigid law rise fraction is deprecated and ignored: rigid "
                                 "laws are inserted extrinsically in every model (no elastic "
                                 "rise; the same discrete law as the beam and the FEM)");
-  end_ligament = prm.get_double("End ligament") * mm;
+  // The old name (the shared renaming rule, core/renamed_key.h): used when given, with a note.
+  const RenamedKey ligament{"MPM", "Minimum ligament", "End ligament"};
+  const std::string text = prm.get(ligament.name), old_text = prm.get(ligament.old_name);
+  end_ligament =
+      resolve_renamed(ligament, prm.get_double(ligament.name), text != "0", text,
+                      deprecated_number(ligament, old_text, "a length in mm", 0, HUGE_VAL),
+                      old_text, "the Beam's key", deprecation_notes) *
+      mm;
   steady_growth = prm.get_double("Steady growth") * mm;
   steady_state_window = prm.get_double("Steady state window") * mm;
   plateau_tolerance = prm.get_double("Plateau tolerance");
@@ -114,15 +154,19 @@ void declare_mpm_section(dealii::ParameterHandler& prm) {
   declare_section<MpmSection>(prm, "MPM");
 }
 
+mpm::MpmParameters read_mpm_section(dealii::ParameterHandler& prm) {
+  return parse_section<MpmSection>(prm, "MPM");
+}
+
 void check_mpm_item(SceneContext& ctx) {
-  const MpmSection params = parse_section<MpmSection>(*ctx.prm, "MPM");
+  const mpm::MpmParameters params = read_mpm_section(*ctx.prm);
   const law::TractionLaw* law = ctx.law_known_before_run();
   if (ctx.specimen_from_section())
     mpm::check_dcb_inputs(ctx.specimen(), ctx.material(), params, law);
 }
 
 void run_mpm_item(SceneContext& ctx) {
-  mpm::MpmParameters params = parse_section<MpmSection>(*ctx.prm, "MPM");
+  mpm::MpmParameters params = read_mpm_section(*ctx.prm);
   params.resume = ctx.resume;
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
   result::SimulationResult result = mpm::simulate_dcb(

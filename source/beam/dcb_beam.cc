@@ -42,7 +42,7 @@ void BeamParameters::validate(const std::string& c) const {
   if (!(newton_tolerance > 0 && newton_tolerance < 1e-2))
     throw InputError(c + "/Newton tolerance: must be in (0, 0.01)");
   if (max_newton_iterations < 1)
-    throw InputError(c + "/Newton iterations: must be >= 1");
+    throw InputError(c + "/Maximum Newton iterations: must be >= 1");
   if (!(final_crack_length >= 0))
     throw InputError(c + ": the final crack length must be >= 0 (0 = stop at steady state)");
   if (max_advances < 1)
@@ -552,6 +552,8 @@ SimulationResult DcbBeamSolver::run() {
   result.n_dofs_or_particles = static_cast<long>(element_K_.size());
   // A rigid law acts as given from sigma(0+) at the tip node: the one rule of every model.
   law::discrete_law(*law_, result.notes);
+  for (const auto& note : prm_.deprecation_notes)
+    result.notes.push_back(note);
   const double a0 = specimen_.initial_crack, L = specimen_.length;
   const double dc = law_->critical_opening();
   const double h_e = length_[1];

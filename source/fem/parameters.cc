@@ -1,7 +1,9 @@
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/renamed_key.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/fem/dcb_simulation.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -19,6 +21,10 @@ void require(bool ok, const char* key, const char* what) {
   if (!ok)
     throw InputError(std::string("FEM/") + key + ": " + what);
 }
+
+/// The declared default of Steady state window [mm]: a scene that writes another text gives the
+/// key (resolve_renamed).
+constexpr const char* default_window_mm = "10";
 } // namespace
 
 void FemParameters::Mesh::declare_parameters(dealii::ParameterHandler& prm) {
@@ -201,12 +207,12 @@ void FemParameters::JDomain::validate() const {
 }
 
 void FemParameters::SteadyState::declare_parameters(dealii::ParameterHandler& prm) {
-  prm.declare_entry("Steady state window", "10", Double(0),
+  prm.declare_entry("Steady state window", default_window_mm, Double(0),
                     "Steady state: after the notch root moved, R_J has stayed within the plateau "
                     "tolerance over at least this much crack growth [mm]; G_ss is its mean there.");
   prm.declare_entry("Steady-state window", "", dealii::Patterns::Anything(),
                     "Deprecated name of Steady state window [mm]; still accepted, with a note in "
-                    "the run's notes.");
+                    "the run's notes (an error if both are given and differ).");
   prm.declare_entry("Plateau tolerance", "0.01", Double(0, 1),
                     "Relative spread (max - min over mean) of R_J over the steady-state window "
                     "accepted as a plateau.");
@@ -214,21 +220,13 @@ void FemParameters::SteadyState::declare_parameters(dealii::ParameterHandler& pr
 
 void FemParameters::SteadyState::parse_parameters(dealii::ParameterHandler& prm,
                                                   std::vector<std::string>& notes) {
-  window = prm.get_double("Steady state window") * units::mm;
-  if (const std::string old = prm.get("Steady-state window"); !old.empty()) {
-    std::size_t used = 0;
-    double v = 0;
-    try {
-      v = std::stod(old, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || old.find_first_not_of(" \t", used) != std::string::npos)
-      throw InputError("FEM/Steady-state window: expected a length in mm, got '" + old + "'");
-    window = v * units::mm;
-    notes.push_back("FEM/Steady-state window is deprecated: use FEM/Steady state "
-                    "window (the same key in the Beam, FEM and MPM sections)");
-  }
+  // The old name (the shared renaming rule, core/renamed_key.h): used when given, with a note.
+  const RenamedKey key{"FEM", "Steady state window", "Steady-state window"};
+  const std::string text = prm.get(key.name), old_text = prm.get(key.old_name);
+  window = resolve_renamed(key, prm.get_double(key.name), text != default_window_mm, text,
+                           deprecated_number(key, old_text, "a length in mm", 0, HUGE_VAL),
+                           old_text, "the same key in the Beam, FEM and MPM sections", notes) *
+           units::mm;
   plateau_tolerance = prm.get_double("Plateau tolerance");
 }
 

@@ -45,11 +45,11 @@ void check_dcb_inputs(const specimen::Specimen& s, const specimen::Material& m,
                      " mm leaves fewer than 2 cells through an arm of " + fmt(h / mm) +
                      " mm; use at most " + fmt(h / 2 / mm) + " mm");
   // As DcbModel::setup_body places them: the tip on the node column nearest to the sawn crack's
-  // end, the last tip position one end ligament before the far end.
+  // end, the last tip position one minimum ligament before the far end.
   const double ligament = p.end_ligament > 0 ? p.end_ligament : s.height;
   const double a0 = std::round(s.initial_crack / c) * c;
   if (!(L - ligament > a0 + 2 * c))
-    throw InputError("MPM/End ligament: the tip could not grow: initial crack " +
+    throw InputError("MPM/Minimum ligament: the tip could not grow: initial crack " +
                      fmt(s.initial_crack / mm) + " mm + ligament " + fmt(ligament / mm) +
                      " mm leave no room in a " + fmt(L / mm) + " mm specimen");
   // Rigid laws need no check here: they are inserted as given (law/rigid_law.h).

@@ -24,12 +24,12 @@ void MpmParameters::validate() const {
   require(loading_periods >= 1, "Loading periods",
           "must be >= 1 (faster loading is not quasi-static)");
   require(ramp_periods >= 0, "Ramp periods", "must be >= 0");
-  require(growth_step_cells >= 1 && growth_step_cells <= 4, "Growth step",
-          "must be 1 to 4 whole cells (the tip moves from node column to node column)");
+  require(growth_step_cells >= 1 && growth_step_cells <= 4, "Tip advance",
+          "must round to 1 to 4 whole cells (the tip moves from node column to node column)");
   require(j_window_periods >= 0 && j_window_periods <= 1, "J window periods",
           "must lie in [0, 1] arm periods");
   require(tip_j_cells >= 1, "Tip J domain", "must be at least 1 cell");
-  require(end_ligament >= 0, "End ligament", "must be >= 0 (mm)");
+  require(end_ligament >= 0, "Minimum ligament", "must be >= 0 (mm)");
   require(steady_growth >= 0, "Steady growth", "must be >= 0 (mm)");
   require(steady_state_window > 0 && std::isfinite(steady_state_window), "Steady state window",
           "must be positive (mm)");

@@ -276,6 +276,20 @@ TEST(Scenes, ThinArmBeamSaysWhenSmallRotationsAreNotEnough) {
   expect_clean_failure("thin_bad_kinematics", base + "large'", "Kinematics");
 }
 
+// An old key name still runs and the run's notes in summary.json say what replaced it (issue 14
+// section 3; the beam's notes are new with Beam/Newton iterations, so its path is checked whole).
+TEST(Scenes, OldBeamKeyRunsWithADeprecationNote) {
+  const auto r = run("beam_old_key", "run " + source("tests/app/scenes/compare_beam_pva.prm") +
+                                         " --set Run=beam --set 'Beam/Newton iterations=40'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = read_json(work("beam_old_key") / "out" / "summary.json");
+  unsigned noted = 0;
+  for (const auto& n : j["beam"]["notes"])
+    noted += n.get<std::string>().find("Beam/Newton iterations is deprecated: use Beam/Maximum "
+                                       "Newton iterations") != std::string::npos;
+  EXPECT_EQ(noted, 1u);
+}
+
 // reduce (issue 12): raw DCB records in, R(a) out; every record that cannot be used gives one
 // line naming file:line, exit 1 and no summary.json.
 namespace {

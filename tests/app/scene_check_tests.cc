@@ -50,9 +50,10 @@ TEST(SceneCheck, ContradictoryMpmSettingFailsBeforeTheBeamRuns) {
   // 20 mm cells leave less than two cells through the 17.5 mm arm: only the specimen tells.
   expect_rejected_before_running("check_mpm_cells", scene("beam, mpm", "--set 'MPM/Cell size=20'"),
                                  "MPM/Cell size");
-  // The end ligament leaves the tip no room to grow in the 300 mm specimen with a 100 mm notch.
-  expect_rejected_before_running(
-      "check_mpm_ligament", scene("beam, mpm", "--set 'MPM/End ligament=199'"), "MPM/End ligament");
+  // The minimum ligament leaves the tip no room to grow in the 300 mm specimen with a 100 mm notch.
+  expect_rejected_before_running("check_mpm_ligament",
+                                 scene("beam, mpm", "--set 'MPM/Minimum ligament=199'"),
+                                 "MPM/Minimum ligament");
   // Out of the range MpmParameters::validate allows (the pattern admits it).
   expect_rejected_before_running("check_mpm_plateau",
                                  scene("beam, mpm", "--set 'MPM/Plateau tolerance=0'"),
@@ -130,4 +131,20 @@ TEST(SceneCheck, AnUnusedSectionIsNotAnError) {
   const auto r = run("check_unused", args);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(work("check_unused") / "out" / "summary.json"));
+}
+
+// A renamed key given under both names with different values (issue 14 section 3): the scene is
+// refused before the first item, naming both keys (core/renamed_key.h).
+TEST(SceneCheck, RenamedKeyGivenTwiceFailsBeforeTheFirstItem) {
+#if !defined(FIBERBRIDGE_HAVE_BEAM) || !defined(FIBERBRIDGE_HAVE_MPM)
+  GTEST_SKIP() << "beam or MPM module not built (FIBERBRIDGE_MODELS)";
+#endif
+  expect_rejected_before_running(
+      "check_renamed_beam",
+      scene("beam", "--set 'Beam/Maximum Newton iterations=30' --set 'Beam/Newton iterations=20'"),
+      "Beam/Maximum Newton iterations = 30 and Beam/Newton iterations = 20");
+  expect_rejected_before_running(
+      "check_renamed_mpm",
+      scene("beam, mpm", "--set 'MPM/Tip advance=5' --set 'MPM/Growth step=1'"),
+      "MPM/Tip advance = 5 and MPM/Growth step = 1");
 }

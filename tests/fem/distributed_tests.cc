@@ -209,6 +209,34 @@ TEST(FemDistributed, OldSteadyStateWindowKeyIsMappedWithANote) {
   }
 }
 
+// The new name alone carries no note; both names with different values is an error naming both
+// (it is not clear which one the scene meant); the same value under both is accepted, with the
+// note (the rule of every renamed key, core/renamed_key.h).
+TEST(FemDistributed, SteadyStateWindowNewOldAndBothNames) {
+  auto parse = [](const std::string& sets) {
+    dealii::ParameterHandler handler;
+    fem::FemParameters::declare_parameters(handler);
+    handler.parse_input_from_string(sets);
+    fem::FemParameters p;
+    p.parse_parameters(handler);
+    return p;
+  };
+  const auto p = parse("set Steady state window = 6\n");
+  EXPECT_DOUBLE_EQ(p.steady_state.window, 6 * mm);
+  EXPECT_TRUE(p.deprecation_notes.empty());
+  const auto same = parse("set Steady state window = 6\nset Steady-state window = 6\n");
+  EXPECT_DOUBLE_EQ(same.steady_state.window, 6 * mm);
+  EXPECT_EQ(same.deprecation_notes.size(), 1u);
+  try {
+    parse("set Steady state window = 6\nset Steady-state window = 8\n");
+    ADD_FAILURE() << "two different windows were accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("FEM/Steady state window = 6"), std::string::npos) << what;
+    EXPECT_NE(what.find("FEM/Steady-state window = 8"), std::string::npos) << what;
+  }
+}
+
 // FEM/Engine and Linear solver = umfpack are deprecated (one engine, issue 14): still accepted
 // by scenes and said so in the run's notes (docs/cluster.md: what Engine = distributed still
 // does in a scene of several simulations).

@@ -2,6 +2,12 @@
 // Scene items: each declares its section and runs. The simulation items live beside their
 // libraries' owners (item_fem.cc, item_mpm.cc, item_beam.cc).
 #include "fiberbridge/app/scene_context.h"
+#ifdef FIBERBRIDGE_HAVE_BEAM
+#include "fiberbridge/beam/dcb_beam.h"
+#endif
+#ifdef FIBERBRIDGE_HAVE_MPM
+#include "fiberbridge/mpm/parameters.h"
+#endif
 
 namespace fiberbridge::app {
 
@@ -43,6 +49,9 @@ void report_law_routes(SceneContext& ctx);
 #endif
 #ifdef FIBERBRIDGE_HAVE_BEAM
 void declare_beam_section(dealii::ParameterHandler& prm);
+/// The Beam section read and validated, with the notes on deprecated keys it met (the item reads it
+/// so; tests/app/section_tests.cc).
+beam::BeamParameters read_beam_section(dealii::ParameterHandler& prm);
 void check_beam_item(SceneContext& ctx);
 void run_beam_item(SceneContext& ctx);
 #endif
@@ -53,6 +62,8 @@ void run_fem_item(SceneContext& ctx);
 #endif
 #ifdef FIBERBRIDGE_HAVE_MPM
 void declare_mpm_section(dealii::ParameterHandler& prm);
+/// The MPM section read and validated, with the notes on deprecated keys it met.
+mpm::MpmParameters read_mpm_section(dealii::ParameterHandler& prm);
 void check_mpm_item(SceneContext& ctx);
 void run_mpm_item(SceneContext& ctx);
 #endif

@@ -29,6 +29,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace fiberbridge::beam {
 
@@ -53,6 +54,9 @@ struct BeamParameters {
   /// its round-off floor) and the tip condition holds to this relative tolerance.
   double newton_tolerance = 1e-10;
   int max_newton_iterations = 40;
+  /// Notes for the run on deprecated keys met by the scene reader (Beam/Newton iterations, the
+  /// old name of Beam/Maximum Newton iterations).
+  std::vector<std::string> deprecation_notes;
   /// Run on to this crack length [m] instead of stopping at steady state (0 = stop at steady
   /// state): a test record goes on growing the crack past the plateau, and a model compared with
   /// it must too. Steady state is still detected and G_ss reported.

@@ -24,9 +24,10 @@ struct MpmParameters {
   double loading_periods = 8;
   /// The opening rate rises smoothly from zero over this many vibration periods (no shock).
   double ramp_periods = 2;
-  /// Tip growth step in whole cells: the tip moves from node column to node column, because the
-  /// velocity fields split per node (Crack::splits); a step shorter than a cell would change
-  /// nothing the grid sees. The released segment gets crack particles every half cell.
+  /// Tip growth step in whole cells (MPM/Tip advance in mm, rounded; the old MPM/Growth step
+  /// counted cells): the tip moves from node column to node column, because the velocity fields
+  /// split per node (Crack::splits); a step shorter than a cell would change nothing the grid
+  /// sees. The released segment gets crack particles every half cell.
   int growth_step_cells = 1;
   /// The growth criterion compares the tip J averaged over this many periods of the arm at the
   /// current crack length with J_tip; the window restarts at each advance, so the tip grows at
@@ -41,10 +42,12 @@ struct MpmParameters {
   /// The tip J domain: q = 1 within this many cells of the tip, falling to 0 two cells farther.
   double tip_j_cells = 2;
   /// Notes for the run on deprecated keys met by the scene reader (MPM/Rigid law rise fraction:
-  /// rigid laws are inserted extrinsically in every model, law/rigid_law.h).
+  /// rigid laws are inserted extrinsically in every model, law/rigid_law.h; the old names
+  /// MPM/Growth step and MPM/End ligament).
   std::vector<std::string> deprecation_notes;
-  /// Stop once the uncracked ligament is shorter than this [m]; 0 selects the specimen height
-  /// (a shorter ligament no longer behaves like a DCB and its J is no longer Eq. 1's).
+  /// Stop once the uncracked ligament is shorter than this [m] (MPM/Minimum ligament, formerly
+  /// MPM/End ligament); 0 selects the specimen height (a shorter ligament no longer behaves like a
+  /// DCB and its J is no longer Eq. 1's).
   double end_ligament = 0;
   /// Steady state (the shared rule, result::find_steady_state, evaluated on the whole run): after
   /// the root moved, R_J stays within `plateau_tolerance` over at least this much growth [m].
