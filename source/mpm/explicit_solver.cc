@@ -400,8 +400,6 @@ void ExplicitSolver::step() {
     crack_->add_traction_forces(grid_, thickness_);
   }
   update_grid();
-  if (crack_)
-    contact();
   apply_constraints();
   lap(1);
   grid_to_particles();
@@ -471,7 +469,14 @@ void ExplicitSolver::particles_to_grid() {
   // Only the nodes of the last step's box hold anything (every write to the grid goes to a node
   // with mass): clearing them clears the grid. The grid is sized for the final opening, so
   // early in a run the particles reach about a third of its rows.
-  for_box([](NodeField& f) { f = NodeField{}; });
+  // On the team: a serial clear of the box outlasted a helper's idle spin (it then slept and
+  // had to be woken for the scatter).
+  for_box_columns([this](int begin, int end) {
+    NodeField* fields = grid_.fields().data();
+    const int ny = grid_.ny();
+    for (int i = begin; i < end; ++i)
+      std::fill(fields + 2 * (i * ny + box_j_[0]), fields + 2 * (i * ny + box_j_[1]), NodeField{});
+  });
 
   // The scatter to the nodes. Particles keep their lattice order, so a block of consecutive
   // particles touches a band of node columns. The blocks are coloured alternately; blocks of one
@@ -548,6 +553,16 @@ void ExplicitSolver::scatter(long begin, long end) {
   }
 }
 
+template <class Body>
+void ExplicitSolver::for_box_columns(Body&& body) {
+  // Chunks of at least 8 columns, at most 8 chunks: the same for any number of threads.
+  const int n_cols = box_i_[1] - box_i_[0];
+  const int n_chunks = std::min(8, std::max(1, n_cols / 8));
+  team_->run(n_chunks, [&](int k) {
+    body(box_i_[0] + n_cols * k / n_chunks, box_i_[0] + n_cols * (k + 1) / n_chunks);
+  });
+}
+
 template <class F>
 void ExplicitSolver::for_box(F&& f) {
   NodeField* fields = grid_.fields().data();
@@ -558,34 +573,41 @@ void ExplicitSolver::for_box(F&& f) {
 }
 
 void ExplicitSolver::update_grid() {
-  for_box([this](NodeField& f) {
-    if (f.mass <= 0)
-      return;
-    f.vx = f.px / f.mass;
-    f.vy = f.py / f.mass;
-    f.vx_new = f.vx + f.fx / f.mass * dt_;
-    f.vy_new = f.vy + f.fy / f.mass * dt_;
+  // Node by node, independent of every other node: the columns of the box in chunks on the
+  // team (this phase alone outlasted a helper's idle spin, so it slept and was woken every
+  // step).
+  const bool with_contact = crack_ != nullptr;
+  for_box_columns([&](int begin, int end) {
+    for (int i = begin; i < end; ++i)
+      for (int n = grid_.node(i, box_j_[0]); n < grid_.node(i, box_j_[1]); ++n) {
+        for (int side : {0, 1}) {
+          NodeField& f = grid_.field(n, side);
+          if (f.mass <= 0)
+            continue;
+          f.vx = f.px / f.mass;
+          f.vy = f.py / f.mass;
+          f.vx_new = f.vx + f.fx / f.mass * dt_;
+          f.vy_new = f.vy + f.fy / f.mass * dt_;
+        }
+        if (with_contact)
+          contact(grid_.field(n, above), grid_.field(n, below));
+      }
   });
 }
 
-void ExplicitSolver::contact() {
+void ExplicitSolver::contact(NodeField& a, NodeField& b) {
   // Frictionless contact of the two crack faces (the DCB crack plane has normal +y): where both
   // fields meet at a node, have closed (relative normal displacement <= 0) and approach, they
   // exchange normal momentum so that both move with their centre-of-mass normal velocity;
   // tangential motion is free.
-  for (int i = box_i_[0]; i < box_i_[1]; ++i)
-    for (int n = grid_.node(i, box_j_[0]); n < grid_.node(i, box_j_[1]); ++n) {
-      NodeField& a = grid_.field(n, above);
-      NodeField& b = grid_.field(n, below);
-      if (a.mass <= 0 || b.mass <= 0)
-        continue;
-      const double gap = a.muy / a.mass - b.muy / b.mass;
-      if (gap > 0 || a.vy_new - b.vy_new >= 0)
-        continue;
-      const double v = (a.mass * a.vy_new + b.mass * b.vy_new) / (a.mass + b.mass);
-      a.vy_new = v;
-      b.vy_new = v;
-    }
+  if (a.mass <= 0 || b.mass <= 0)
+    return;
+  const double gap = a.muy / a.mass - b.muy / b.mass;
+  if (gap > 0 || a.vy_new - b.vy_new >= 0)
+    return;
+  const double v = (a.mass * a.vy_new + b.mass * b.vy_new) / (a.mass + b.mass);
+  a.vy_new = v;
+  b.vy_new = v;
 }
 
 void ExplicitSolver::apply_constraints() {

@@ -106,8 +106,9 @@ private:
   /// Adds the mass, momentum, mass-weighted displacement and internal force of particles
   /// [begin, end) to their nodes' fields.
   void scatter(long begin, long end);
+  /// Nodal velocities from momentum and force, then (with a crack) contact of the two fields.
   void update_grid();
-  void contact();
+  static void contact(NodeField& above_field, NodeField& below_field);
   void apply_constraints();
   void grid_to_particles();
   /// Velocity, position, deformation and stress of particles [begin, end) from the new grid
@@ -160,6 +161,9 @@ private:
   /// Runs f(field) over both fields of every node in the box the particles reached.
   template <class F>
   void for_box(F&& f);
+  /// Runs body(i_begin, i_end) over the box's node columns in chunks, on the team's threads.
+  template <class Body>
+  void for_box_columns(Body&& body);
   /// Runs body(begin, end) over the particles in chunks, on the team's threads.
   template <class Body>
   void for_particles(Body&& body);
