@@ -171,28 +171,6 @@ double note_small_strain_bound(result::SimulationResult& result) {
   return worst;
 }
 
-double note_zone_resolution(result::SimulationResult& result, double element_length) {
-  double zone = 0, zone_a = 0;
-  for (const auto& pt : result.rcurve)
-    if (std::isfinite(pt.zone_length) && pt.zone_length > zone) {
-      zone = pt.zone_length;
-      zone_a = pt.a;
-    }
-  if (zone <= 0)
-    return 0;
-  const double elements = zone / element_length;
-  if (elements < kMinZoneElements)
-    result.notes.push_back(
-        "resolution: the cohesive zone is at most " + fmt(zone / units::mm, 3) +
-        " mm long (at a = " + fmt(zone_a / units::mm) + " mm), " + fmt(elements, 2) +
-        " elements of " + fmt(element_length / units::mm, 3) + " mm, fewer than the " +
-        fmt(kMinZoneElements) +
-        " a cohesive zone needs: R_energy per advance and the rise of the R curve are coarse "
-        "here (R_J and G_ss less so); FEM/Element size at most " +
-        fmt(zone / kMinZoneElements / units::mm, 3) + " mm resolves it");
-  return elements;
-}
-
 result::SteadyStateRule steady_state_rule(const FemParameters& p,
                                           const specimen::Specimen& specimen) {
   result::SteadyStateRule rule;

@@ -699,7 +699,7 @@ void DcbModel<dim>::summarize(Clock::time_point start) {
         " sub-intervals per element; if R_J falls below Eq. 2, refine FEM/Element size or raise "
         "FEM/Interface sub-intervals");
   note_small_strain_bound(result_);
-  note_zone_resolution(result_, geometry_.dx);
+  result::note_zone_resolution(result_, geometry_.dx, "elements", "FEM/Element size");
   details_.unstable_advances = n_unstable_;
   details_.simulated_law_area = law_->area();
   if (dim == 3 && !material_.plane_stress)

@@ -11,6 +11,7 @@
 #include "fiberbridge/mpm/j_integral.h"
 #include "fiberbridge/mpm/vtu_writer.h"
 #include "fiberbridge/result/numerical_fault.h"
+#include "fiberbridge/result/rcurve.h"
 #include "fiberbridge/result/steady_state.h"
 
 #include <algorithm>
@@ -364,6 +365,8 @@ result::SimulationResult DcbModel::run() {
   r.notes.push_back("stopped: " + stop_reason_ + " after " + std::to_string(s.steps()) +
                     " steps, " + fmt(s.time() * 1e3) + " ms");
   finish(r);
+  // The zone must span cells as it must span elements in the FEM (issue 13 item 6): one rule.
+  result::note_zone_resolution(r, cell_, "cells", "MPM/Cell size");
   // Every session's wall time: a resumed run reports what the whole run cost.
   r.wall_time_s = earlier_wall_seconds_ + session_seconds();
   running_ = false;

@@ -341,6 +341,9 @@ ExplicitSolver::ExplicitSolver(Grid grid, Particles particles, const Orthotropic
     row_side_[j] = grid_.side_of(j);
   split_column_.assign(grid_.nx(), 0);
   team_ = std::make_unique<WorkTeam>(1);
+  // The first step clears the whole grid it was given.
+  box_i_[1] = grid_.nx();
+  box_j_[1] = grid_.ny();
 }
 
 ExplicitSolver::~ExplicitSolver() = default;
@@ -371,9 +374,12 @@ void ExplicitSolver::step() {
   // Helper threads pay only while the cores are free; on cores shared with other processes a
   // descheduled helper stalls every step (measured: 1.3x slower than one thread at a load of
   // 5.6 on 2 cores). Every probe_period steps the solver times probe_steps steps without and
-  // probe_steps with the helpers and runs the rest of the period the faster way. Both ways
-  // compute the same chunks in the same order: the results do not depend on it.
-  constexpr long probe_period = 1000, probe_steps = 20;
+  // probe_steps with the helpers and runs the rest of the period the faster way. It compares
+  // the median step of each way, not the sums: on a virtual machine one step in twenty may
+  // stall for milliseconds (the host runs something else), and with sums such a stall decided
+  // (measured: at 2.5 mm the sums chose one thread in half the periods while two threads ran
+  // the steps 1.3-1.45x faster). Both ways compute the same chunks in the same order: the
+  // results do not depend on the choice.
   const long phase = steps_ % probe_period;
   const bool probing = team_->threads() > 1 && phase < 2 * probe_steps;
   if (probing)
@@ -394,8 +400,6 @@ void ExplicitSolver::step() {
     crack_->add_traction_forces(grid_, thickness_);
   }
   update_grid();
-  if (crack_)
-    contact();
   apply_constraints();
   lap(1);
   grid_to_particles();
@@ -406,11 +410,17 @@ void ExplicitSolver::step() {
   time_ += dt_;
   ++steps_;
   if (probing) {
-    probe_time_[phase >= probe_steps] +=
+    const bool parallel = phase >= probe_steps;
+    probe_seconds_[parallel][phase % probe_steps] =
         phase_seconds_[0] + phase_seconds_[1] + phase_seconds_[2] - before;
     if (phase == 2 * probe_steps - 1) {
-      team_->set_parallel(probe_time_[1] < probe_time_[0]);
-      probe_time_[0] = probe_time_[1] = 0;
+      double median[2];
+      for (int way = 0; way < 2; ++way) {
+        double* t = probe_seconds_[way];
+        std::nth_element(t, t + probe_steps / 2, t + probe_steps);
+        median[way] = t[probe_steps / 2];
+      }
+      team_->set_parallel(median[1] < median[0]);
     }
   }
   // A full scan costs about one tenth of a step; every 50 steps an instability is still caught
@@ -456,7 +466,17 @@ void ExplicitSolver::particles_to_grid() {
   // the tip and away from the crack plane).
   for (int i = 0; i < grid_.nx(); ++i)
     split_column_[i] = crack_ && crack_->splits(above, grid_.x(i), below);
-  grid_.reset();
+  // Only the nodes of the last step's box hold anything (every write to the grid goes to a node
+  // with mass): clearing them clears the grid. The grid is sized for the final opening, so
+  // early in a run the particles reach about a third of its rows.
+  // On the team: a serial clear of the box outlasted a helper's idle spin (it then slept and
+  // had to be woken for the scatter).
+  for_box_columns([this](int begin, int end) {
+    NodeField* fields = grid_.fields().data();
+    const int ny = grid_.ny();
+    for (int i = begin; i < end; ++i)
+      std::fill(fields + 2 * (i * ny + box_j_[0]), fields + 2 * (i * ny + box_j_[1]), NodeField{});
+  });
 
   // The scatter to the nodes. Particles keep their lattice order, so a block of consecutive
   // particles touches a band of node columns. The blocks are coloured alternately; blocks of one
@@ -476,6 +496,15 @@ void ExplicitSolver::particles_to_grid() {
     }
     columns[k] = {lo, hi};
   }
+  box_i_[0] = grid_.nx();
+  box_i_[1] = 0;
+  for (const auto& [lo, hi] : columns) {
+    box_i_[0] = std::min(box_i_[0], lo);
+    box_i_[1] = std::max(box_i_[1], hi + 1);
+  }
+  const auto [j_lo, j_hi] = std::minmax_element(j0_.begin(), j0_.end());
+  box_j_[0] = n > 0 ? *j_lo : 0;
+  box_j_[1] = n > 0 ? *j_hi + 3 : 0;
   bool disjoint = true;
   for (std::size_t k = 0; k < blocks.size() && disjoint; ++k)
     for (std::size_t l = k + 2; l < blocks.size(); l += 2)
@@ -524,34 +553,61 @@ void ExplicitSolver::scatter(long begin, long end) {
   }
 }
 
-void ExplicitSolver::update_grid() {
-  for (NodeField& f : grid_.fields()) {
-    if (f.mass <= 0)
-      continue;
-    f.vx = f.px / f.mass;
-    f.vy = f.py / f.mass;
-    f.vx_new = f.vx + f.fx / f.mass * dt_;
-    f.vy_new = f.vy + f.fy / f.mass * dt_;
-  }
+template <class Body>
+void ExplicitSolver::for_box_columns(Body&& body) {
+  // Chunks of at least 8 columns, at most 8 chunks: the same for any number of threads.
+  const int n_cols = box_i_[1] - box_i_[0];
+  const int n_chunks = std::min(8, std::max(1, n_cols / 8));
+  team_->run(n_chunks, [&](int k) {
+    body(box_i_[0] + n_cols * k / n_chunks, box_i_[0] + n_cols * (k + 1) / n_chunks);
+  });
 }
 
-void ExplicitSolver::contact() {
+template <class F>
+void ExplicitSolver::for_box(F&& f) {
+  NodeField* fields = grid_.fields().data();
+  const int ny = grid_.ny();
+  for (int i = box_i_[0]; i < box_i_[1]; ++i)
+    for (int k = 2 * (i * ny + box_j_[0]); k < 2 * (i * ny + box_j_[1]); ++k)
+      f(fields[k]);
+}
+
+void ExplicitSolver::update_grid() {
+  // Node by node, independent of every other node: the columns of the box in chunks on the
+  // team (this phase alone outlasted a helper's idle spin, so it slept and was woken every
+  // step).
+  const bool with_contact = crack_ != nullptr;
+  for_box_columns([&](int begin, int end) {
+    for (int i = begin; i < end; ++i)
+      for (int n = grid_.node(i, box_j_[0]); n < grid_.node(i, box_j_[1]); ++n) {
+        for (int side : {0, 1}) {
+          NodeField& f = grid_.field(n, side);
+          if (f.mass <= 0)
+            continue;
+          f.vx = f.px / f.mass;
+          f.vy = f.py / f.mass;
+          f.vx_new = f.vx + f.fx / f.mass * dt_;
+          f.vy_new = f.vy + f.fy / f.mass * dt_;
+        }
+        if (with_contact)
+          contact(grid_.field(n, above), grid_.field(n, below));
+      }
+  });
+}
+
+void ExplicitSolver::contact(NodeField& a, NodeField& b) {
   // Frictionless contact of the two crack faces (the DCB crack plane has normal +y): where both
   // fields meet at a node, have closed (relative normal displacement <= 0) and approach, they
   // exchange normal momentum so that both move with their centre-of-mass normal velocity;
   // tangential motion is free.
-  for (int n = 0; n < grid_.n_nodes(); ++n) {
-    NodeField& a = grid_.field(n, above);
-    NodeField& b = grid_.field(n, below);
-    if (a.mass <= 0 || b.mass <= 0)
-      continue;
-    const double gap = a.muy / a.mass - b.muy / b.mass;
-    if (gap > 0 || a.vy_new - b.vy_new >= 0)
-      continue;
-    const double v = (a.mass * a.vy_new + b.mass * b.vy_new) / (a.mass + b.mass);
-    a.vy_new = v;
-    b.vy_new = v;
-  }
+  if (a.mass <= 0 || b.mass <= 0)
+    return;
+  const double gap = a.muy / a.mass - b.muy / b.mass;
+  if (gap > 0 || a.vy_new - b.vy_new >= 0)
+    return;
+  const double v = (a.mass * a.vy_new + b.mass * b.vy_new) / (a.mass + b.mass);
+  a.vy_new = v;
+  b.vy_new = v;
 }
 
 void ExplicitSolver::apply_constraints() {
@@ -583,11 +639,12 @@ void ExplicitSolver::grid_to_particles() {
   // momentum at a common velocity; the constraint's work is counted at its velocity). Derived
   // for the USL step here; measured: it closes the DCB energy balance to 2e-4 of the work.
   double grid_gain = 0;
-  for (const NodeField& f : grid_.fields())
+  for_box([&grid_gain](const NodeField& f) {
     if (f.mass > 0) {
       const double ax = f.vx_new - f.vx, ay = f.vy_new - f.vy;
       grid_gain += 0.5 * f.mass * (ax * ax + ay * ay);
     }
+  });
   // Work of particle forces: they act on the grid, so their power is force times the nodal
   // velocity (mean of before and after the step). The particle's own FLIP velocity carries
   // noise the grid never sees; with it the work came out 3 % high on the cantilever test.
@@ -758,7 +815,7 @@ void ExplicitSolver::save_state(BinaryWriter& out) const {
   // Statistics (the performance note): carried on so that a resumed run reports the whole run.
   out.put(parallel_steps_);
   out.put(phase_seconds_);
-  out.put(probe_time_);
+  out.put(probe_seconds_);
   out.put(team_->parallel());
 }
 
@@ -787,10 +844,14 @@ void ExplicitSolver::load_state(BinaryReader& in) {
   in.get(numerical_loss_);
   in.get(parallel_steps_);
   in.get(phase_seconds_);
-  in.get(probe_time_);
+  in.get(probe_seconds_);
   team_->set_parallel(in.get<bool>());
   // The weights of the next step: the same arithmetic as at the end of the saved step.
   weights_current_ = false;
+  // The grid may hold anything (this solver may have run): the next step clears all of it.
+  box_i_[0] = box_j_[0] = 0;
+  box_i_[1] = grid_.nx();
+  box_j_[1] = grid_.ny();
   off_grid_ = -1;
 }
 

@@ -14,9 +14,11 @@ void cpu_relax() {
 #endif
 }
 
-/// Idle polls of a helper before it sleeps: a pause is about 40 ns on current x86 cores, so
-/// this is some 50 us, longer than the serial grid phase between two particle loops of a step
-/// (the helper stays awake through a run) and short enough to leave a busy core to others.
+/// Idle polls of a helper before it sleeps: a pause took 25 ns on the 2-vCPU EPYC machine of
+/// docs/verification.md, so this is some 30 us, longer than the serial pieces between two runs
+/// of a step (the grid clear and update run on the team for that reason: serial, they outlasted
+/// the spin, and the helper slept and was woken every step), and short enough to leave a busy
+/// core to others (5000 spins: the same speed idle, 0.77-1.04 of it at a load of 1.4-2.2).
 constexpr int idle_spins = 1200;
 
 constexpr std::uint64_t chunk_mask = (1u << 20) - 1;

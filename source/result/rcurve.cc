@@ -1,6 +1,7 @@
 #include "fiberbridge/result/rcurve.h"
 
 #include "fiberbridge/core/csv.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/traction_law.h"
 
@@ -38,6 +39,29 @@ double rdelta_error_vs_eq2(const SimulationResult& r, const law::TractionLaw& la
     den += exact * exact;
   }
   return den > 0 ? std::sqrt(num / den) : not_available;
+}
+
+double note_zone_resolution(SimulationResult& result, double spacing,
+                            const std::string& spacing_name, const std::string& key) {
+  double zone = 0, zone_a = 0;
+  for (const auto& pt : result.rcurve)
+    if (std::isfinite(pt.zone_length) && pt.zone_length > zone) {
+      zone = pt.zone_length;
+      zone_a = pt.a;
+    }
+  if (zone <= 0)
+    return 0;
+  const double mm = units::mm;
+  const double n = zone / spacing;
+  if (n < kMinZoneSpacings)
+    result.notes.push_back(
+        "resolution: the cohesive zone is at most " + fmt(zone / mm, 3) +
+        " mm long (at a = " + fmt(zone_a / mm) + " mm), " + fmt(n, 2) + " " + spacing_name +
+        " of " + fmt(spacing / mm, 3) + " mm, fewer than the " + fmt(kMinZoneSpacings) +
+        " a cohesive zone needs: R_energy per advance and the rise of the R "
+        "curve are coarse here (R_J and G_ss less so); " +
+        key + " at most " + fmt(zone / kMinZoneSpacings / mm, 3) + " mm resolves it");
+  return n;
 }
 
 } // namespace fiberbridge::result

@@ -227,7 +227,7 @@ TEST(FemThinArm, RefinementLadderConvergesMonotonically) {
 // of both specimens (measured: G_ss 602.4 and 598.4 J/m^2 against 600; refined on the seed
 // specimen 600.5, 600.1, 599.9 at 1, 0.5, 0.25 mm, docs/verification.md "Thin arms"). 2 % is
 // the bound: the zone is under two 2 mm elements long on the seed specimen, which the run
-// notes (dcb_common.h, kMinZoneElements).
+// notes (result/rcurve.h, kMinZoneSpacings).
 TEST(FemThinArm, StrongShortLawGivesItsWholeRCurve) {
   const auto law = law::make_linear_softening(10000 * kPa, 0.1 * mm);
   const double j_tip = 100, G = j_tip + law.area();

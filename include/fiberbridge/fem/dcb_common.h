@@ -112,19 +112,6 @@ inline constexpr double kSmallRotationLoadError = 0.13;
 inline constexpr double kSmallRotationBound = 0.01;
 double note_small_strain_bound(result::SimulationResult& result);
 
-/// A cohesive zone resolved by fewer elements than this gives a coarse released energy per
-/// advance and a stepped R curve: Turon et al., "An engineering solution for mesh size effects in
-/// the simulation of delamination using cohesive zone models", Eng. Fract. Mech. 74 (2007)
-/// 1665-1682, ask for at least three elements in the zone. (R_J and G_ss are less sensitive: the
-/// FEM's strong short law, docs/verification.md "Strong short laws", gave G_ss within 0.4 % with
-/// a zone of 1.7 elements while R_energy was 7 % low.)
-inline constexpr double kMinZoneElements = 3;
-/// Adds a note to `result` when the longest cohesive zone of its R curve (tip minus notch root)
-/// spans fewer than kMinZoneElements elements of length `element_length` along the crack plane,
-/// with the element size that would resolve it; nothing for a law without bridging (no zone).
-/// Returns the zone's length in elements (0 without a zone).
-double note_zone_resolution(result::SimulationResult& result, double element_length);
-
 /// Stress components [Pa] for DataOut (xx, xy, yy in 2D; the six in 3D).
 template <int dim>
 class StressPostprocessor : public dealii::DataPostprocessor<dim> {

@@ -15,7 +15,7 @@ namespace fiberbridge::mpm {
 
 /// Format version of the file: raised whenever its layout or the meaning of a saved value
 /// changes.
-inline constexpr unsigned checkpoint_version = 1;
+inline constexpr unsigned checkpoint_version = 2; // 2: the probe keeps step times
 
 /// The checkpoint of a run into `output_dir`: <output_dir>/resume/mpm_state.bin.
 std::string checkpoint_path(const std::string& output_dir);

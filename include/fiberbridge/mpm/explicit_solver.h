@@ -106,8 +106,9 @@ private:
   /// Adds the mass, momentum, mass-weighted displacement and internal force of particles
   /// [begin, end) to their nodes' fields.
   void scatter(long begin, long end);
+  /// Nodal velocities from momentum and force, then (with a crack) contact of the two fields.
   void update_grid();
-  void contact();
+  static void contact(NodeField& above_field, NodeField& below_field);
   void apply_constraints();
   void grid_to_particles();
   /// Velocity, position, deformation and stress of particles [begin, end) from the new grid
@@ -157,6 +158,12 @@ private:
         f(base + 2 * b + (split ? own : rows[b]), sx[a] * sy[b], dsx[a] * sy[b], sx[a] * dsy[b]);
     }
   }
+  /// Runs f(field) over both fields of every node in the box the particles reached.
+  template <class F>
+  void for_box(F&& f);
+  /// Runs body(i_begin, i_end) over the box's node columns in chunks, on the team's threads.
+  template <class Body>
+  void for_box_columns(Body&& body);
   /// Runs body(begin, end) over the particles in chunks, on the team's threads.
   template <class Body>
   void for_particles(Body&& body);
@@ -190,7 +197,13 @@ private:
   std::vector<double> chunk_sums_; ///< energy terms per particle chunk (summed in chunk order)
   long parallel_steps_ = 0;
   double phase_seconds_[3] = {0, 0, 0};
-  double probe_time_[2] = {0, 0}; ///< wall time of the serial and parallel probe steps [s]
+  /// Probe (step()): every probe_period steps, probe_steps steps without and probe_steps with
+  /// the helper threads, each step's wall time kept [s].
+  static constexpr long probe_period = 1000, probe_steps = 20;
+  double probe_seconds_[2][probe_steps] = {};
+  /// Node columns and rows the particles reached in the last scatter ([lo, hi), empty at first):
+  /// every node outside holds an empty field, so the grid loops run over this box only.
+  int box_i_[2] = {0, 0}, box_j_[2] = {0, 0};
   double time_ = 0;
   long steps_ = 0;
   double external_work_ = 0, damping_loss_ = 0, numerical_loss_ = 0;

@@ -1,0 +1,56 @@
+// The one zone-resolution rule of the FEM and the MPM (result/rcurve.h): a note when the longest
+// cohesive zone of the R curve spans fewer than three crack-plane elements or cells.
+#include "fiberbridge/core/units.h"
+#include "fiberbridge/result/rcurve.h"
+
+#include <gtest/gtest.h>
+
+namespace fiberbridge::result {
+namespace {
+
+constexpr double mm = units::mm;
+
+SimulationResult with_zones(std::initializer_list<double> zones_mm) {
+  SimulationResult r;
+  double a = 100 * mm;
+  for (const double z : zones_mm) {
+    RCurvePoint p;
+    a += 5 * mm;
+    p.a = a;
+    p.zone_length = z * mm;
+    r.rcurve.push_back(p);
+  }
+  return r;
+}
+
+TEST(ZoneResolution, ShortZoneIsNotedWithTheSettingThatResolvesIt) {
+  // Longest zone 6 mm at a = 110 mm; 5 mm cells: 1.2 cells, under 3.
+  SimulationResult r = with_zones({4, 6, 5});
+  const double n = note_zone_resolution(r, 5 * mm, "cells", "MPM/Cell size");
+  EXPECT_NEAR(n, 1.2, 1e-12);
+  ASSERT_EQ(r.notes.size(), 1u);
+  const std::string& note = r.notes[0];
+  EXPECT_EQ(note.rfind("resolution: the cohesive zone is at most 6 mm long (at a = 110 mm)", 0), 0u)
+      << note;
+  EXPECT_NE(note.find("1.2 cells of 5 mm"), std::string::npos) << note;
+  // 6 mm over the three spacings a zone needs: 2 mm.
+  EXPECT_NE(note.find("MPM/Cell size at most 2 mm resolves it"), std::string::npos) << note;
+}
+
+TEST(ZoneResolution, ResolvedZoneOrNoZoneGivesNoNote) {
+  SimulationResult resolved = with_zones({10, 30, 20});
+  EXPECT_NEAR(note_zone_resolution(resolved, 2 * mm, "elements", "FEM/Element size"), 15, 1e-12);
+  EXPECT_TRUE(resolved.notes.empty());
+  // Exactly three spacings is resolved (the bound is "fewer than three").
+  SimulationResult bound = with_zones({6});
+  note_zone_resolution(bound, 2 * mm, "elements", "FEM/Element size");
+  EXPECT_TRUE(bound.notes.empty());
+  // An LEFM law has no zone: the column is NaN or zero, and nothing is said.
+  SimulationResult lefm = with_zones({0, 0});
+  lefm.rcurve.push_back(RCurvePoint{});
+  EXPECT_EQ(note_zone_resolution(lefm, 2 * mm, "elements", "FEM/Element size"), 0);
+  EXPECT_TRUE(lefm.notes.empty());
+}
+
+} // namespace
+} // namespace fiberbridge::result
