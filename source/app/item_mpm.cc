@@ -127,10 +127,10 @@ void MpmSection::parse_parameters(dealii::ParameterHandler& prm) {
   growth_step_cells = parse_tip_advance(prm, cell_size, deprecation_notes);
   j_window_periods = prm.get_double("J window periods");
   tip_j_cells = prm.get_double("Tip J domain");
-  if (!prm.get("Rigid law rise fraction").empty())
-    deprecation_notes.push_back("MPM/Rigid law rise fraction is deprecated and ignored: rigid "
-                                "laws are inserted extrinsically in every model (no elastic "
-                                "rise; the same discrete law as the beam and the FEM)");
+  note_ignored_key("MPM/Rigid law rise fraction", prm.get("Rigid law rise fraction"),
+                   "rigid laws are inserted extrinsically in every model (no elastic rise; the "
+                   "same discrete law as the beam and the FEM)",
+                   deprecation_notes);
   // The old name (the shared renaming rule, core/renamed_key.h): used when given, with a note.
   const RenamedKey ligament{"MPM", "Minimum ligament", "End ligament"};
   const std::string text = prm.get(ligament.name), old_text = prm.get(ligament.old_name);

@@ -38,4 +38,10 @@ double resolve_renamed(const RenamedKey& k, double value, bool given, const std:
   return *old_value;
 }
 
+void note_ignored_key(const std::string& key, const std::string& text, const std::string& why,
+                      std::vector<std::string>& notes) {
+  if (!text.empty())
+    notes.push_back(key + " is deprecated and ignored: " + why);
+}
+
 } // namespace fiberbridge

@@ -780,3 +780,14 @@ run_distributed(const specimen::Specimen& specimen, const specimen::Material& ma
 }
 
 } // namespace fiberbridge::fem::distributed
+
+// The explicit instantiations of one dimension, used by dcb_model_2d.cc and dcb_model_3d.cc (a
+// translation unit each, so that the two compile in parallel).
+#define FIBERBRIDGE_FEM_INSTANTIATE_DCB_MODEL(dim)                                                \
+  namespace fiberbridge::fem::distributed {                                                       \
+  template class DcbModel<dim>;                                                                   \
+  template result::SimulationResult run_distributed<dim>(                                         \
+      const specimen::Specimen&, const specimen::Material&, const law::TractionLaw&, double,      \
+      const FemParameters&, const std::string&, const std::function<void(const std::string&)>&,   \
+      MPI_Comm, DistributedRunInfo&, FemRunDetails&);                                             \
+  }

@@ -2,14 +2,4 @@
 // compile, and the two compile in parallel).
 #include "dcb_model.templates.h"
 
-namespace fiberbridge::fem::distributed {
-
-template class DcbModel<2>;
-template result::SimulationResult run_distributed<2>(const specimen::Specimen&,
-                                                     const specimen::Material&,
-                                                     const law::TractionLaw&, double,
-                                                     const FemParameters&, const std::string&,
-                                                     const std::function<void(const std::string&)>&,
-                                                     MPI_Comm, DistributedRunInfo&, FemRunDetails&);
-
-} // namespace fiberbridge::fem::distributed
+FIBERBRIDGE_FEM_INSTANTIATE_DCB_MODEL(2)

@@ -106,10 +106,10 @@ void FemParameters::Interface::parse_parameters(dealii::ParameterHandler& prm,
                                                 std::vector<std::string>& notes) {
   subintervals = prm.get_integer("Interface sub-intervals");
   contact_stiffness_factor = prm.get_double("Contact stiffness factor");
-  if (!prm.get("Rigid law stiffness factor").empty())
-    notes.push_back("FEM/Rigid law stiffness factor is deprecated and ignored: rigid "
-                    "laws are inserted extrinsically in every model (no elastic "
-                    "rise; the same discrete law as the beam and the MPM)");
+  note_ignored_key("FEM/Rigid law stiffness factor", prm.get("Rigid law stiffness factor"),
+                   "rigid laws are inserted extrinsically in every model (no elastic rise; the "
+                   "same discrete law as the beam and the MPM)",
+                   notes);
 }
 
 void FemParameters::Interface::validate() const {

@@ -36,4 +36,9 @@ double resolve_renamed(const RenamedKey& k, double value, bool given, const std:
                        std::optional<double> old_value, const std::string& old_text,
                        const std::string& why, std::vector<std::string>& notes);
 
+/// A key that is still declared but no longer used: when a scene gives it (`text` not empty), the
+/// note "<key> is deprecated and ignored: <why>" goes into `notes`.
+void note_ignored_key(const std::string& key, const std::string& text, const std::string& why,
+                      std::vector<std::string>& notes);
+
 } // namespace fiberbridge
