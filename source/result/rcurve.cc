@@ -5,6 +5,7 @@
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/traction_law.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fiberbridge::result {
@@ -42,7 +43,8 @@ double rdelta_error_vs_eq2(const SimulationResult& r, const law::TractionLaw& la
 }
 
 double note_zone_resolution(SimulationResult& result, double spacing,
-                            const std::string& spacing_name, const std::string& key) {
+                            const std::string& spacing_name, const std::string& key,
+                            double reading_offset) {
   double zone = 0, zone_a = 0;
   for (const auto& pt : result.rcurve)
     if (std::isfinite(pt.zone_length) && pt.zone_length > zone) {
@@ -52,15 +54,21 @@ double note_zone_resolution(SimulationResult& result, double spacing,
   if (zone <= 0)
     return 0;
   const double mm = units::mm;
-  const double n = zone / spacing;
+  const double n = zone / spacing - reading_offset;
+  const double resolved = std::max(n, 0.0) * spacing;
   if (n < kMinZoneSpacings)
     result.notes.push_back(
         "resolution: the cohesive zone is at most " + fmt(zone / mm, 3) +
-        " mm long (at a = " + fmt(zone_a / mm) + " mm), " + fmt(n, 2) + " " + spacing_name +
-        " of " + fmt(spacing / mm, 3) + " mm, fewer than the " + fmt(kMinZoneSpacings) +
-        " a cohesive zone needs: R_energy per advance and the rise of the R "
-        "curve are coarse here (R_J and G_ss less so); " +
-        key + " at most " + fmt(zone / kMinZoneSpacings / mm, 3) + " mm resolves it");
+        " mm long (at a = " + fmt(zone_a / mm) + " mm)" +
+        (reading_offset > 0 ? ", of which about " + fmt(reading_offset) + " " + spacing_name +
+                                  " are the model's reading of the root, so"
+                            : ",") +
+        " " + fmt(std::max(n, 0.0), 2) + " " + spacing_name + " of " + fmt(spacing / mm, 3) +
+        " mm, fewer than the " + fmt(kMinZoneSpacings) +
+        " a cohesive zone needs: the energy released per advance and the rise of the R curve are "
+        "coarse here, and G_ss may be off; " +
+        key + " at most " + fmt(std::max(resolved, 0.0) / kMinZoneSpacings / mm, 3) +
+        " mm would resolve the zone read here" + (resolved > 0 ? "" : " (none: refine and rerun)"));
   return n;
 }
 

@@ -34,7 +34,23 @@ TEST(ZoneResolution, ShortZoneIsNotedWithTheSettingThatResolvesIt) {
       << note;
   EXPECT_NE(note.find("1.2 cells of 5 mm"), std::string::npos) << note;
   // 6 mm over the three spacings a zone needs: 2 mm.
-  EXPECT_NE(note.find("MPM/Cell size at most 2 mm resolves it"), std::string::npos) << note;
+  EXPECT_NE(note.find("MPM/Cell size at most 2 mm would resolve the zone read here"),
+            std::string::npos)
+      << note;
+}
+
+TEST(ZoneResolution, AModelsReadingOffsetIsTakenOffFirst) {
+  // 17.5 mm read at 5 mm cells is 3.5 cells; less the 2 cells an MPM reads for any zone, 1.5.
+  SimulationResult r = with_zones({12.5, 17.5, 12.5});
+  EXPECT_NEAR(note_zone_resolution(r, 5 * mm, "cells", "MPM/Cell size", 2), 1.5, 1e-12);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_NE(r.notes[0].find("of which about 2 cells are the model's reading of the root"),
+            std::string::npos)
+      << r.notes[0];
+  // The same reading without the offset counts as resolved (3.5 cells).
+  SimulationResult plain = with_zones({12.5, 17.5, 12.5});
+  EXPECT_NEAR(note_zone_resolution(plain, 5 * mm, "cells", "MPM/Cell size"), 3.5, 1e-12);
+  EXPECT_TRUE(plain.notes.empty());
 }
 
 TEST(ZoneResolution, ResolvedZoneOrNoZoneGivesNoNote) {

@@ -65,9 +65,13 @@ inline constexpr double kMinZoneSpacings = 3;
 /// Adds a note to `result` when the longest cohesive zone of its R curve (tip minus notch root)
 /// spans fewer than kMinZoneSpacings of the model's crack-plane spacing (`spacing` [m], named
 /// `spacing_name`, e.g. "elements", "cells"), naming the setting `key` and the value that would
-/// resolve the zone; nothing for a law without bridging (no zone). Returns the zone's length in
-/// spacings (0 without a zone). One rule for the FEM and the MPM.
+/// resolve the zone; nothing for a law without bridging (no zone). `reading_offset`: spacings the
+/// model's zone reading holds even for a zone of length zero, subtracted first (the MPM reads
+/// its root two cells or more behind the tip however short the zone, source/mpm/dcb.cc).
+/// Returns the zone's length in spacings after that (0 without a zone). One rule for the FEM and
+/// the MPM.
 double note_zone_resolution(SimulationResult& result, double spacing,
-                            const std::string& spacing_name, const std::string& key);
+                            const std::string& spacing_name, const std::string& key,
+                            double reading_offset = 0);
 
 } // namespace fiberbridge::result
