@@ -89,6 +89,24 @@ void CrackPlane<dim>::gather(MPI_Comm comm) {
 }
 
 template <int dim>
+void CrackPlane<dim>::hold_mean_load_line(const std::map<dof_index, double>& local_weights,
+                                          MPI_Comm comm) {
+  std::vector<double> flat; // (dof, weight) pairs as doubles for one all_gather (dofs < 2^53)
+  for (const auto& [d, w] : local_weights)
+    flat.insert(flat.end(), {double(d), w});
+  load_weight_.clear();
+  for (const auto& block : Utilities::MPI::all_gather(comm, flat))
+    for (std::size_t r = 0; r + 2 <= block.size(); r += 2)
+      load_weight_[dof_index(std::llround(block[r]))] += block[r + 1];
+  // Lagrange shape functions of degree 1 and 2 have positive face integrals.
+  for (const auto* line : {&load_top_, &load_bottom_})
+    for (const auto d : *line)
+      if (!(load_weight_[d] > 0))
+        throw ComputationError("FEM mesh: a load-line dof has no end-face weight (mesh "
+                               "generation error)");
+}
+
+template <int dim>
 std::vector<types::global_dof_index> CrackPlane<dim>::dofs() const {
   std::vector<dof_index> special;
   for (const auto& n : nodes_)
@@ -252,13 +270,29 @@ void CrackPlane<dim>::make_constraints(double opening, const IndexSet& relevant,
         c.add_line(n.top[d]);
         c.add_entry(n.top[d], n.bottom[d], 1.0);
       }
-  for (const auto d : load_top_) {
-    c.add_line(d);
-    c.set_inhomogeneity(d, 0.5 * opening);
-  }
-  for (const auto d : load_bottom_) {
-    c.add_line(d);
-    c.set_inhomogeneity(d, -0.5 * opening);
+  for (const auto& [line, value] :
+       {std::make_pair(&load_top_, 0.5 * opening), std::make_pair(&load_bottom_, -0.5 * opening)}) {
+    if (load_weight_.empty()) {
+      for (const auto d : *line) {
+        c.add_line(d);
+        c.set_inhomogeneity(d, value);
+      }
+      continue;
+    }
+    // sum_i w_i u_i = value sum_i w_i, solved for the dof of largest weight.
+    dof_index k = line->front();
+    double total = 0;
+    for (const auto d : *line) {
+      total += load_weight_.at(d);
+      if (load_weight_.at(d) > load_weight_.at(k))
+        k = d;
+    }
+    const double wk = load_weight_.at(k);
+    c.add_line(k);
+    for (const auto d : *line)
+      if (d != k)
+        c.add_entry(k, d, -load_weight_.at(d) / wk);
+    c.set_inhomogeneity(k, value * total / wk);
   }
   for (const auto d : support_)
     c.add_line(d);

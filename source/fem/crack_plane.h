@@ -13,6 +13,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <map>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -33,6 +34,12 @@ public:
   void note_support_point(dof_index dof, unsigned c, const dealii::Point<dim>& p, bool top);
   /// Gathers the noted dofs of all ranks into the node grid, the load lines and the supports.
   void gather(MPI_Comm comm);
+  /// FEM/Kinematics = finite: each load line holds the weighted mean of its vertical
+  /// displacements instead of each of them, so that the loaded end section rotates freely at any
+  /// angle (a uniform vertical displacement of a rotated section is a moment at second order).
+  /// `local_weights`: this rank's integrals of the load-line dofs' shape functions over the end
+  /// face (a uniform shear traction's consistent loads), summed over the ranks here.
+  void hold_mean_load_line(const std::map<dof_index, double>& local_weights, MPI_Comm comm);
   /// The crack-plane and load-line dofs: every rank keeps them as ghosts.
   std::vector<dof_index> dofs() const;
   /// The replicated interface: composite Gauss-Lobatto points per crack-plane face row
@@ -118,6 +125,7 @@ private:
   unsigned n_z_ = 1;
   std::vector<double> node_zw_; ///< width weight of each z station (sum = width)
   std::vector<dof_index> load_top_, load_bottom_, support_;
+  std::map<dof_index, double> load_weight_; ///< empty: each load-line dof is prescribed
 
   std::unique_ptr<CohesiveInterface> interface_;
   std::vector<PointMap> point_map_;

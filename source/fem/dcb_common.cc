@@ -166,8 +166,7 @@ double note_small_strain_bound(result::SimulationResult& result) {
         " of the crack length, where small-rotation kinematics put the load about " +
         fmt(100 * error, 2) +
         " % low (the beam model's elastica comparison, 0.13 (opening/a)^2), "
-        "past the 1 % bound; the FEM has small-strain kinematics only: run the beam model with "
-        "Beam/Kinematics = finite for this range");
+        "past the 1 % bound; set FEM/Kinematics = finite for this range");
   return worst;
 }
 

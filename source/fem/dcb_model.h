@@ -93,6 +93,10 @@ private:
   }
   double far_field_j() const;
   double bulk_energy() const; ///< per width [J/m]
+  /// FEM/Kinematics = finite: adds the internal forces at u_ghost to `forces` and the cell
+  /// tangents to `jacobian` (condensed with hom_) where given; returns this rank's strain energy.
+  double finite_bulk(const Vec& u_ghost, Vec* forces,
+                     dealii::TrilinosWrappers::SparseMatrix* jacobian) const;
   double stored_energy() const;
   double load_per_width();
   result::RCurvePoint record_advance();
@@ -116,6 +120,7 @@ private:
   const MPI_Comm comm_;
   const unsigned rank_, n_ranks_;
   const dealii::SymmetricTensor<4, dim> C_;
+  const bool finite_; ///< FEM/Kinematics = finite
   /// Width over which the 3D fields are integrated (1 m in 2D: the 2D fields are per width).
   double width_ = 1;
 
@@ -142,6 +147,9 @@ private:
   /// The homogeneous constraints of the current tie set; epoch_ counts the tie sets.
   dealii::AffineConstraints<double> hom_;
   unsigned epoch_ = 0, pattern_epoch_ = ~0u;
+  /// What the Jacobian solver is told: a new value whenever the Jacobian changed beyond its
+  /// interface tangents (a new tie set; with finite kinematics every linearization).
+  unsigned solver_epoch_ = 0, solver_ties_epoch_ = ~0u;
   std::unique_ptr<JacobianSolver> solver_;
 
   Vec u_, u_ghost_, scratch_ghost_, residual_ghost_;

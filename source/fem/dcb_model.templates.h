@@ -19,6 +19,7 @@
 
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
+#include "fiberbridge/fem/finite_strain.h"
 #include "fiberbridge/law/rigid_law.h"
 #include "fiberbridge/result/numerical_fault.h"
 #include "fiberbridge/result/steady_state.h"
@@ -31,6 +32,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/vector.h>
 
 #include <algorithm>
 #include <cmath>
@@ -54,11 +56,12 @@ DcbModel<dim>::DcbModel(const specimen::Specimen& specimen, const specimen::Mate
       output_dir_(output_dir), progress_(progress), comm_(comm),
       rank_(Utilities::MPI::this_mpi_process(comm)),
       n_ranks_(Utilities::MPI::n_mpi_processes(comm)),
-      C_(orthotropic_stiffness<dim>(material, parameters)), triangulation_(comm),
-      fe_(FE_Q<dim>(parameters.mesh.degree), dim), dof_handler_(triangulation_),
-      crack_(1e-9 * specimen.length),
+      C_(orthotropic_stiffness<dim>(material, parameters)),
+      finite_(parameters.nonlinear.kinematics == FemParameters::Nonlinear::Kinematics::finite),
+      triangulation_(comm), fe_(FE_Q<dim>(parameters.mesh.degree), dim),
+      dof_handler_(triangulation_), crack_(1e-9 * specimen.length),
       timer_(MPI_COMM_SELF, std::cout, TimerOutput::never, TimerOutput::wall_times),
-      output_(output_dir, comm) {
+      output_(output_dir, comm, finite_) {
   specimen_.validate();
   material_.validate();
   prm_.validate();
@@ -110,6 +113,28 @@ void DcbModel<dim>::setup_dofs() {
     }
   }
   crack_.gather(comm_);
+  if (finite_) {
+    // The load lines hold their mean opening (crack_plane.h): weights from the end face x = 0.
+    const QGauss<dim - 1> face_quadrature(fe_.degree + 1);
+    FEFaceValues<dim> ffv(mapping_, fe_, face_quadrature, update_values | update_JxW_values);
+    std::map<types::global_dof_index, double> weights;
+    for (const auto& cell : dof_handler_.active_cell_iterators()) {
+      if (!cell->is_locally_owned())
+        continue;
+      for (const unsigned f : cell->face_indices()) {
+        if (!cell->face(f)->at_boundary() ||
+            std::abs(cell->face(f)->center()[0]) > 1e-9 * specimen_.length)
+          continue;
+        ffv.reinit(cell, f);
+        cell->get_dof_indices(dofs);
+        for (unsigned i = 0; i < dofs.size(); ++i)
+          if (fe_.system_to_component_index(i).first == 1 && fe_.has_support_on_face(i, f))
+            for (unsigned q = 0; q < face_quadrature.size(); ++q)
+              weights[dofs[i]] += ffv.shape_value_component(i, q, 1) * ffv.JxW(q);
+      }
+    }
+    crack_.hold_mean_load_line(weights, comm_);
+  }
 
   // Relevant = the usual ghosts + every crack-plane and load-line dof (small sets), so that
   // every rank has every tie, load and support constraint and every crack-plane value.
@@ -195,7 +220,11 @@ void DcbModel<dim>::residual(const Vec& u, Vec& r, Vec& r_full) {
   // condensed (ties moved to their partners, prescribed rows dropped).
   const TimerOutput::Scope timed(timer_, "assembly");
   scratch_ghost_ = u;
-  bulk_.vmult(r_full, u);
+  if (finite_) {
+    r_full = 0;
+    finite_bulk(scratch_ghost_, &r_full, nullptr);
+  } else
+    bulk_.vmult(r_full, u);
   crack_.add_forces(scratch_ghost_, r_full);
   r_full.compress(VectorOperation::add);
   condense(r_full, r);
@@ -248,7 +277,11 @@ void DcbModel<dim>::setup_jacobian(const Vec& u) {
     if (solver_->needs_spd_tangents() && tangents[p] < 0)
       tangents[p] = o[p] > 0 ? std::max(0.0, resp.force / o[p]) : 0.0;
   }
-  solver_->update(tangents, epoch_);
+  if (finite_ || solver_ties_epoch_ != epoch_) {
+    ++solver_epoch_;
+    solver_ties_epoch_ = epoch_;
+  }
+  solver_->update(tangents, solver_epoch_);
 }
 
 template <int dim>
@@ -279,13 +312,16 @@ void DcbModel<dim>::assemble_jacobian(const std::vector<double>& tangents,
     pattern_epoch_ = epoch_;
   }
   jacobian = 0;
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
-    if (!cell->is_locally_owned())
-      continue;
-    cell->get_dof_indices(dofs);
-    hom_.distribute_local_to_global(shape_matrices_[cell_shape_[cell->active_cell_index()]], dofs,
-                                    jacobian);
-  }
+  if (finite_)
+    finite_bulk(u_ghost_, nullptr, &jacobian); // the tangent at the linearization point
+  else
+    for (const auto& cell : dof_handler_.active_cell_iterators()) {
+      if (!cell->is_locally_owned())
+        continue;
+      cell->get_dof_indices(dofs);
+      hom_.distribute_local_to_global(shape_matrices_[cell_shape_[cell->active_cell_index()]], dofs,
+                                      jacobian);
+    }
   crack_.add_jacobian(tangents, hom_, jacobian);
   jacobian.compress(VectorOperation::add);
 }
@@ -472,8 +508,9 @@ double DcbModel<dim>::domain_j(const Ramp& q, bool crack_face_term) const {
   // J B = int_V (sigma_i1 u_i,1 - W) q,1 dV + int_faces sigma_coh d(delta)/dx q dA (Moran & Shih;
   // q = q(x) across the whole width, so in 3D this is the width average of J along a straight
   // front). Divided by the width: per unit width, as the 2D J.
-  double J =
-      gsum(bulk_domain_j_local(dof_handler_, mapping_, prm_.mesh.degree, C_, u_ghost_, q)) / width_;
+  double J = gsum(bulk_domain_j_local(dof_handler_, mapping_, prm_.mesh.degree, C_, u_ghost_, q,
+                                      finite_)) /
+             width_;
   if (crack_face_term)
     J += crack_face_j(&q);
   return J;
@@ -495,7 +532,70 @@ double DcbModel<dim>::far_field_j() const {
 
 template <int dim>
 double DcbModel<dim>::bulk_energy() const {
+  if (finite_)
+    return gsum(finite_bulk(u_ghost_, nullptr, nullptr)) / width_;
   return 0.5 * bulk_.matrix_norm_square(u_) / width_;
+}
+
+template <int dim>
+double DcbModel<dim>::finite_bulk(const Vec& u_ghost, Vec* forces,
+                                  TrilinosWrappers::SparseMatrix* jacobian) const {
+  // Total Lagrangian: f_i = int P : grad N_i dV, K_ij = int grad N_i : dP/dF : grad N_j dV
+  // = int (grad N_i S) : grad N_j + sym(F^T grad N_i) : C : sym(F^T grad N_j) dV (step-44's
+  // material and geometric parts).
+  const QGauss<dim> quadrature(prm_.mesh.degree + 1);
+  FEValues<dim> fv(mapping_, fe_, quadrature, update_gradients | update_JxW_values);
+  const FEValuesExtractors::Vector displacement(0);
+  const unsigned n = fe_.n_dofs_per_cell();
+  std::vector<Tensor<2, dim>> H(quadrature.size()), G(n), GS(n);
+  std::vector<SymmetricTensor<2, dim>> e(n), Ce(n);
+  std::vector<types::global_dof_index> dofs(n);
+  Vector<double> f(n);
+  FullMatrix<double> k(n, n);
+  double energy = 0;
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    if (!cell->is_locally_owned())
+      continue;
+    fv.reinit(cell);
+    fv[displacement].get_function_gradients(u_ghost, H);
+    f = 0;
+    k = 0;
+    for (unsigned q = 0; q < quadrature.size(); ++q) {
+      const SvkPoint<dim> s(C_, H[q]);
+      const double dV = fv.JxW(q);
+      energy += s.W * dV;
+      if (!forces && !jacobian)
+        continue;
+      for (unsigned i = 0; i < n; ++i) {
+        G[i] = fv[displacement].gradient(i, q);
+        if (forces)
+          f(i) += scalar_product(s.P, G[i]) * dV;
+      }
+      if (!jacobian)
+        continue;
+      const Tensor<2, dim> S(s.S);
+      for (unsigned i = 0; i < n; ++i) {
+        GS[i] = G[i] * S;
+        e[i] = s.strain_variation(G[i]);
+        Ce[i] = C_ * e[i];
+      }
+      for (unsigned i = 0; i < n; ++i)
+        for (unsigned j = 0; j <= i; ++j)
+          k(i, j) += (scalar_product(GS[i], G[j]) + e[i] * Ce[j]) * dV;
+    }
+    if (!forces && !jacobian)
+      continue;
+    cell->get_dof_indices(dofs);
+    if (forces)
+      forces->add(dofs, f);
+    if (jacobian) {
+      for (unsigned i = 0; i < n; ++i)
+        for (unsigned j = 0; j < i; ++j)
+          k(j, i) = k(i, j);
+      hom_.distribute_local_to_global(k, dofs, *jacobian);
+    }
+  }
+  return energy;
 }
 
 template <int dim>
@@ -698,7 +798,14 @@ void DcbModel<dim>::summarize(Clock::time_point start) {
         std::to_string(prm_.interface.subintervals) +
         " sub-intervals per element; if R_J falls below Eq. 2, refine FEM/Element size or raise "
         "FEM/Interface sub-intervals");
-  note_small_strain_bound(result_);
+  if (finite_)
+    result_.method.push_back(
+        "kinematics: finite (FEM/Kinematics = finite): total Lagrangian, orthotropic St "
+        "Venant-Kirchhoff, domain J with the first Piola-Kirchhoff stress in the reference "
+        "configuration, load lines held at their mean opening (the loaded ends rotate freely); "
+        "the cohesive opening is the jump normal to the undeformed crack plane");
+  else
+    note_small_strain_bound(result_);
   result::note_zone_resolution(result_, geometry_.dx, "elements", "FEM/Element size");
   details_.unstable_advances = n_unstable_;
   details_.simulated_law_area = law_->area();
@@ -783,11 +890,12 @@ run_distributed(const specimen::Specimen& specimen, const specimen::Material& ma
 
 // The explicit instantiations of one dimension, used by dcb_model_2d.cc and dcb_model_3d.cc (a
 // translation unit each, so that the two compile in parallel).
-#define FIBERBRIDGE_FEM_INSTANTIATE_DCB_MODEL(dim)                                                \
-  namespace fiberbridge::fem::distributed {                                                       \
-  template class DcbModel<dim>;                                                                   \
-  template result::SimulationResult run_distributed<dim>(                                         \
-      const specimen::Specimen&, const specimen::Material&, const law::TractionLaw&, double,      \
-      const FemParameters&, const std::string&, const std::function<void(const std::string&)>&,   \
-      MPI_Comm, DistributedRunInfo&, FemRunDetails&);                                             \
+#define FIBERBRIDGE_FEM_INSTANTIATE_DCB_MODEL(dim)                                                 \
+  namespace fiberbridge::fem::distributed {                                                        \
+  template class DcbModel<dim>;                                                                    \
+  template result::SimulationResult                                                                \
+  run_distributed<dim>(const specimen::Specimen&, const specimen::Material&,                       \
+                       const law::TractionLaw&, double, const FemParameters&, const std::string&,  \
+                       const std::function<void(const std::string&)>&, MPI_Comm,                   \
+                       DistributedRunInfo&, FemRunDetails&);                                       \
   }

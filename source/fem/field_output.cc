@@ -30,7 +30,7 @@ void FieldOutput<dim>::write(const DoFHandler<dim>& dof_handler, const Mapping<d
       dim, DataComponentInterpretation::component_is_part_of_vector);
   data_out.add_data_vector(u_ghost, std::vector<std::string>(dim, "displacement_m"),
                            DataOut<dim>::type_dof_data, vector_field);
-  const StressPostprocessor<dim> stress(C);
+  const StressPostprocessor<dim> stress(C, finite_);
   data_out.add_data_vector(u_ghost, stress);
   Vector<float> subdomain(triangulation.n_active_cells());
   for (auto& s : subdomain)

@@ -18,8 +18,10 @@ namespace fiberbridge::fem {
 template <int dim>
 class FieldOutput {
 public:
-  /// Nothing is written when output_dir is empty.
-  FieldOutput(std::string output_dir, MPI_Comm comm) : dir_(std::move(output_dir)), comm_(comm) {}
+  /// Nothing is written when output_dir is empty. `finite`: the stress is the Cauchy stress of
+  /// the finite-strain state (FEM/Kinematics = finite).
+  FieldOutput(std::string output_dir, MPI_Comm comm, bool finite)
+      : dir_(std::move(output_dir)), comm_(comm), finite_(finite) {}
   /// Writes fem_dcb-NNNN (advance NNNN) and rewrites fem_dcb.pvd on rank 0 (collective).
   void write(const dealii::DoFHandler<dim>& dof_handler, const dealii::Mapping<dim>& mapping,
              const dealii::SymmetricTensor<4, dim>& C, const Vec& u_ghost, unsigned advance,
@@ -28,6 +30,7 @@ public:
 private:
   const std::string dir_;
   const MPI_Comm comm_;
+  const bool finite_;
   std::vector<std::pair<double, std::string>> pvd_records_;
 };
 

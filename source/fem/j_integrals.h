@@ -32,11 +32,14 @@ inline Ramp far_field_j_weight(double a0, double arm_thickness, double x_tip, un
 }
 
 /// This rank's part of int_V (sigma_i1 u_i,1 - W) q,1 dV over its owned cells (Moran & Shih;
-/// q = q(x) across the whole width): sum over ranks and divide by the width for J.
+/// q = q(x) across the whole width): sum over ranks and divide by the width for J. With
+/// `finite`, the same integral in the reference configuration with the first Piola-Kirchhoff
+/// stress P and the St Venant-Kirchhoff energy (fem/finite_strain.h): the energy-momentum
+/// (Eshelby) form, path-independent at any rotation.
 template <int dim>
 double bulk_domain_j_local(const dealii::DoFHandler<dim>& dof_handler,
                            const dealii::Mapping<dim>& mapping, unsigned degree,
                            const dealii::SymmetricTensor<4, dim>& C, const Vec& u_ghost,
-                           const Ramp& q);
+                           const Ramp& q, bool finite);
 
 } // namespace fiberbridge::fem

@@ -85,6 +85,12 @@ struct FemParameters {
       kinsol  ///< SUNDIALS KINSOL, line-search strategy; its result is re-checked here
     };
     Solver solver = Solver::newton;
+    /// Bulk kinematics: small strain (linear elasticity, the bulk stiffness assembled once) or
+    /// finite (total Lagrangian, orthotropic St Venant-Kirchhoff, fem/finite_strain.h; the load
+    /// line holds its mean opening so that the loaded end rotates freely, and the Jacobian is
+    /// assembled and factorized at every Newton iteration).
+    enum class Kinematics { small, finite };
+    Kinematics kinematics = Kinematics::small;
 
     static void declare_parameters(dealii::ParameterHandler& prm);
     void parse_parameters(dealii::ParameterHandler& prm);
