@@ -72,4 +72,16 @@ double note_zone_resolution(SimulationResult& result, double spacing,
   return n;
 }
 
+void withdraw_steady_state(SimulationResult& result, const std::string& reason) {
+  if (!result.reached_steady_state)
+    return;
+  result.reached_steady_state = false;
+  const std::string claim = "steady state: ";
+  for (auto& n : result.notes)
+    if (n.rfind(claim, 0) == 0)
+      n = "no steady state claimed: " + reason +
+          "; the plateau of R_J (G_ss = " + fmt(result.G_ss) +
+          " J/m^2 is its mean) need not be the law's. " + n.substr(claim.size());
+}
+
 } // namespace fiberbridge::result

@@ -1,5 +1,6 @@
 // The one zone-resolution rule of the FEM and the MPM (result/rcurve.h): a note when the longest
-// cohesive zone of the R curve spans fewer than three crack-plane elements or cells.
+// cohesive zone of the R curve spans fewer than three crack-plane elements or cells; and the
+// withdrawal of a steady-state claim that a model finds unsound (the MPM's open energy ledger).
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/result/rcurve.h"
 
@@ -66,6 +67,30 @@ TEST(ZoneResolution, ResolvedZoneOrNoZoneGivesNoNote) {
   lefm.rcurve.push_back(RCurvePoint{});
   EXPECT_EQ(note_zone_resolution(lefm, 2 * mm, "elements", "FEM/Element size"), 0);
   EXPECT_TRUE(lefm.notes.empty());
+}
+
+// The MPM's strong short law (10 MPa, 0.1 mm at 5 mm cells) read a flat R_J 23 % below the law
+// and called it steady state: a run found unsound withdraws the claim, keeps G_ss, says why.
+TEST(SteadyStateClaim, WithdrawnWithItsReasonAndThePlateauKept) {
+  SimulationResult r = with_zones({12.5, 17.5, 12.5});
+  r.reached_steady_state = true;
+  r.G_ss = 459.8;
+  r.notes.push_back("resolution: kept");
+  r.notes.push_back("steady state: R_J within 2.88 % over the last 15 mm");
+  withdraw_steady_state(r, "the energy ledger does not close");
+  EXPECT_FALSE(r.reached_steady_state);
+  EXPECT_DOUBLE_EQ(r.G_ss, 459.8);
+  ASSERT_EQ(r.notes.size(), 2u);
+  EXPECT_EQ(r.notes[0], "resolution: kept");
+  EXPECT_EQ(r.notes[1], "no steady state claimed: the energy ledger does not close; the plateau "
+                        "of R_J (G_ss = 459.8 J/m^2 is its mean) need not be the law's. R_J within "
+                        "2.88 % over the last 15 mm");
+  // A run without the claim is left as it is.
+  SimulationResult none = with_zones({12.5});
+  none.notes.push_back("no steady state: the notch root did not move");
+  withdraw_steady_state(none, "anything");
+  EXPECT_FALSE(none.reached_steady_state);
+  EXPECT_EQ(none.notes[0], "no steady state: the notch root did not move");
 }
 
 } // namespace

@@ -74,4 +74,10 @@ double note_zone_resolution(SimulationResult& result, double spacing,
                             const std::string& spacing_name, const std::string& key,
                             double reading_offset = 0);
 
+/// A model that finds its own run unsound after the steady-state rule passed (the MPM: an
+/// energy ledger that does not close) withdraws the claim: reached_steady_state becomes false,
+/// G_ss keeps the plateau's mean, and the steady-state note starts with "no steady state
+/// claimed: " and `reason`. Nothing when the run did not claim steady state.
+void withdraw_steady_state(SimulationResult& result, const std::string& reason);
+
 } // namespace fiberbridge::result
