@@ -62,6 +62,7 @@ private:
   double reaction_norm(const Vec& r_full) const override;
   double norm(const Vec& v) const override { return broadcast_norm(v, comm_); }
   void setup_jacobian(const Vec& u) override;
+  void note_contraction(double ratio) override { last_contraction_ = ratio; }
   void solve_jacobian(const Vec& rhs, Vec& x) override;
   double roundoff_floor(const Vec& u) const override;
   std::string contact_summary() override;
@@ -150,6 +151,10 @@ private:
   /// What the Jacobian solver is told: a new value whenever the Jacobian changed beyond its
   /// interface tangents (a new tie set; with finite kinematics every linearization).
   unsigned solver_epoch_ = 0, solver_ties_epoch_ = ~0u;
+  /// Finite kinematics: Newton's last contraction (1: none reported) and the linearizations
+  /// since the bulk tangent was last assembled (chord steps reuse it, setup_jacobian()).
+  double last_contraction_ = 1;
+  unsigned chord_steps_ = 0;
   std::unique_ptr<JacobianSolver> solver_;
 
   Vec u_, u_ghost_, scratch_ghost_, residual_ghost_;

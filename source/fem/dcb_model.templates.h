@@ -277,9 +277,21 @@ void DcbModel<dim>::setup_jacobian(const Vec& u) {
     if (solver_->needs_spd_tangents() && tangents[p] < 0)
       tangents[p] = o[p] > 0 ? std::max(0.0, resp.force / o[p]) : 0.0;
   }
-  if (finite_ || solver_ties_epoch_ != epoch_) {
+  // Finite kinematics changes the bulk tangent with u: a new assembly and factorization, unless
+  // the last Newton step contracted the residual well (a chord step with the older bulk tangent
+  // and this state's interface tangents, corrected by the low-rank update; at most
+  // kMaxChordSteps in a row). Factorizing is most of an iteration's cost, more so in 3D.
+  constexpr double kChordContraction = 0.3;
+  constexpr unsigned kMaxChordSteps = 8;
+  const bool chord = finite_ && solver_ties_epoch_ == epoch_ &&
+                     last_contraction_ < kChordContraction && chord_steps_ < kMaxChordSteps;
+  last_contraction_ = 1;
+  if (chord)
+    ++chord_steps_;
+  else if (finite_ || solver_ties_epoch_ != epoch_) {
     ++solver_epoch_;
     solver_ties_epoch_ = epoch_;
+    chord_steps_ = 0;
   }
   solver_->update(tangents, solver_epoch_);
 }

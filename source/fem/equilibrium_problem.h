@@ -22,6 +22,10 @@ public:
   virtual double norm(const Vec& v) const = 0;
   /// Linearizes at u (the model's state becomes u).
   virtual void setup_jacobian(const Vec& u) = 0;
+  /// Newton reports the residual reduction of its last step (new norm / old norm): a model may
+  /// keep an older Jacobian while the steps contract well (a chord step). Without a report since
+  /// the last linearization (KINSOL) the model linearizes afresh.
+  virtual void note_contraction(double /*ratio*/) {}
   /// x = J^-1 rhs with the tied dofs following their partners.
   virtual void solve_jacobian(const Vec& rhs, Vec& x) = 0;
   /// Residual norm below which round-off of the terms that cancel in K u rules.

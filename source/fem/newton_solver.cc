@@ -56,6 +56,7 @@ bool newton_solve(EquilibriumProblem& problem, Vec& u, const NonlinearSettings& 
     ref = best_ref;
     const double before = nrm;
     nrm = problem.norm(r);
+    problem.note_contraction(nrm / before);
     // The same stagnation when a step still finds a sliver of decrease: with finite kinematics
     // the internal forces of rotated arms cancel large terms, and after its quadratic phase
     // Newton crept along the round-off plateau to the iteration limit (measured: 10-20 wasted
