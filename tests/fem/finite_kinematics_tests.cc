@@ -3,6 +3,7 @@
 // than 5 %, and against small strain where the arms hardly rotate. The LEFM composite DCB of the
 // shared records' geometry (tests/common/thin_dcb_case.h) at initiation: J_tip sets the opening
 // over crack length, which grows with sqrt(J_tip).
+#include "common/notes.h"
 #include "common/thin_dcb_case.h"
 #include "fiberbridge/beam/dcb_beam.h"
 #include "fiberbridge/beam/elastica.h"
@@ -22,12 +23,7 @@ using units::mm;
 
 namespace {
 
-bool has_note(const result::SimulationResult& r, const std::string& start) {
-  for (const auto& n : r.notes)
-    if (n.rfind(start, 0) == 0)
-      return true;
-  return false;
-}
+using test_notes::has_note;
 
 /// The composite in LEFM with the given FEM kinematics; a short steady-state window so that the
 /// run stops a few advances after initiation (the LEFM R curve is flat from the first advance).

@@ -3,6 +3,7 @@
 // the default settings reproduce corrected beam theory on a published composite DCB and the
 // bridging law of a 3 mm-arm specimen, refinement converges (and never turns a converged run
 // into a failure, with either nonlinear solver), and large rotations are noted.
+#include "common/notes.h"
 #include "common/thin_dcb_case.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
@@ -23,12 +24,7 @@ using units::mm;
 
 namespace {
 
-bool has_note(const result::SimulationResult& r, const std::string& start) {
-  for (const auto& n : r.notes)
-    if (n.rfind(start, 0) == 0)
-      return true;
-  return false;
-}
+using test_notes::has_note;
 
 void print(const result::SimulationResult& r) {
   std::cout << "  a_mm load_N opening_mm R_J R_eq2\n";
