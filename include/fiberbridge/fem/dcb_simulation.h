@@ -87,8 +87,8 @@ struct FemParameters {
     Solver solver = Solver::newton;
     /// Bulk kinematics: small strain (linear elasticity, the bulk stiffness assembled once) or
     /// finite (total Lagrangian, orthotropic St Venant-Kirchhoff, fem/finite_strain.h; the load
-    /// line holds its mean opening so that the loaded end rotates freely, and the Jacobian is
-    /// assembled and factorized at every Newton iteration).
+    /// line holds its mean opening so that the loaded end rotates freely, and the bulk tangent is
+    /// assembled and factorized again unless Newton's last step left under 0.3 of the residual).
     enum class Kinematics { small, finite };
     Kinematics kinematics = Kinematics::small;
 

@@ -1,6 +1,6 @@
 #pragma once
 // Finite-strain kinematics of the FEM bulk (FEM/Kinematics = finite; docs/design.md section 2,
-// "Finite rotations"): total Lagrangian, St Venant-Kirchhoff with the orthotropic stiffness of
+// "Kinematics"): total Lagrangian, St Venant-Kirchhoff with the orthotropic stiffness of
 // the small-strain model, in the style of deal.II's step-44 (which uses a neo-Hookean law; a
 // DCB arm rotates far at small strain, where St Venant-Kirchhoff is the natural extension of
 // the orthotropic Hooke law the small-strain model uses). Everything is per unit reference
@@ -28,11 +28,6 @@ struct SvkPoint {
   /// The work-conjugate strain variation of a shape-function gradient G: sym(F^T G).
   dealii::SymmetricTensor<2, dim> strain_variation(const dealii::Tensor<2, dim>& G) const {
     return dealii::symmetrize(dealii::transpose(F) * G);
-  }
-  /// dP/dF applied to G (the tangent's column): G S + F (C : sym(F^T G)).
-  dealii::Tensor<2, dim> tangent(const dealii::SymmetricTensor<4, dim>& C,
-                                 const dealii::Tensor<2, dim>& G) const {
-    return G * dealii::Tensor<2, dim>(S) + F * dealii::Tensor<2, dim>(C * strain_variation(G));
   }
   /// Cauchy stress F S F^T / det F, for output.
   dealii::SymmetricTensor<2, dim> cauchy() const {
