@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(build-essential cmake libdeal.ii-dev libboost-program-options-dev libboost-dev
           libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev gnuplot-nox clang-format
-          libnlopt-cxx-dev clang libclang-rt-14-dev libomp-14-dev)
+          libnlopt-cxx-dev clang libclang-rt-14-dev libomp-14-dev gmsh)
 # clang + compiler-rt (libFuzzer, ASan/UBSan runtimes) + libomp: the sanitized fuzz build of the
 # CI command (FIBERBRIDGE_FUZZ=ON, README "Two commands"). NLopt: the identify library.
 missing=()

@@ -7,9 +7,11 @@
 // spread over the ranks (task_distributor.h). Under mpirun every rank of that communicator runs
 // this item (the engine is collective); only its rank 0 prints progress, and the file writers are
 // switched off on the ranks that do not write (core/output_guard.h).
+#include "fiberbridge/app/scene.h"
 #include "fiberbridge/app/scene_context.h"
 #include "fiberbridge/app/section.h"
 #include "fiberbridge/app/task_distributor.h"
+#include "fiberbridge/core/error.h"
 #include "fiberbridge/fem/dcb_simulation.h"
 #include "fiberbridge/fem/distributed_dcb.h"
 #include "fiberbridge/fem/input_check.h"
@@ -17,22 +19,41 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <filesystem>
 #include <iostream>
 
 namespace fiberbridge::app {
+
+namespace {
+
+/// The FEM section, with FEM/Mesh file resolved against the scene's folder (a scene and the
+/// specimen mesh it names travel together, as mesh/ and prm/ do).
+fem::FemParameters fem_parameters(const SceneContext& ctx) {
+  auto params = parse_section<fem::FemParameters>(*ctx.prm, "FEM");
+  if (!params.mesh.file.empty()) {
+    const std::string path = resolve_scene_path(params.mesh.file, ctx.scene_file);
+    if (!std::filesystem::is_regular_file(path))
+      throw InputError(ctx.scene_file + ": FEM/Mesh file: file '" + params.mesh.file +
+                       "' not found (looked for " + path + ")");
+    params.mesh.file = path;
+  }
+  return params;
+}
+
+} // namespace
 
 void declare_fem_section(dealii::ParameterHandler& prm) {
   declare_section<fem::FemParameters>(prm, "FEM");
 }
 
 void check_fem_item(SceneContext& ctx) {
-  const auto params = parse_section<fem::FemParameters>(*ctx.prm, "FEM");
+  const auto params = fem_parameters(ctx);
   if (ctx.specimen_from_section())
     fem::check_dcb_inputs(ctx.specimen(), ctx.material(), params);
 }
 
 void run_fem_item(SceneContext& ctx) {
-  const auto params = parse_section<fem::FemParameters>(*ctx.prm, "FEM");
+  const auto params = fem_parameters(ctx);
   const MPI_Comm comm = simulation_communicator();
   const unsigned n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
   const bool rank0 = dealii::Utilities::MPI::this_mpi_process(comm) == 0;

@@ -69,18 +69,24 @@ SymmetricTensor<4, 3> orthotropic_stiffness<3>(const specimen::Material& m,
   return T;
 }
 
-DcbMeshLines dcb_mesh_lines(const specimen::Specimen& specimen, const FemParameters& p) {
-  const double L = specimen.length, a0 = specimen.initial_crack;
-  const double h = specimen.arm_thickness();
-  DcbMeshLines m;
-  // Uniform elements along x with a mesh line at a0, so that every advance is one element.
+double crack_plane_step(const specimen::Specimen& specimen, const FemParameters& p) {
+  const double a0 = specimen.initial_crack;
   const unsigned n_a0 = std::max(1u, unsigned(std::lround(a0 / p.mesh.element_size)));
-  m.dx = a0 / n_a0;
   if (n_a0 < std::max(5u, p.j_domain.half_width_elements + 1))
     throw InputError("Specimen/Initial crack: the notch must span at least " +
                      std::to_string(std::max(5u, p.j_domain.half_width_elements + 1)) +
                      " elements (the far-field J domain lies between load line and notch tip); "
                      "reduce FEM/Element size");
+  return a0 / n_a0;
+}
+
+DcbMeshLines dcb_mesh_lines(const specimen::Specimen& specimen, const FemParameters& p) {
+  const double L = specimen.length;
+  const double h = specimen.arm_thickness();
+  DcbMeshLines m;
+  // Uniform elements along x with a mesh line at a0, so that every advance is one element.
+  m.dx = crack_plane_step(specimen, p);
+  const unsigned n_a0 = unsigned(std::lround(specimen.initial_crack / m.dx));
   const unsigned n_x = std::max(n_a0 + 1, unsigned(std::floor(L / m.dx + 1e-9)));
   for (unsigned i = 0; i <= n_x; ++i)
     m.x.push_back(std::min(L, i * m.dx));

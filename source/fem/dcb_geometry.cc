@@ -1,7 +1,9 @@
 // The slit coarse mesh of the DCB (dcb_geometry.h; docs/design.md section 2).
 #include "dcb_geometry.h"
 
+#include "fiberbridge/core/error.h"
 #include "fiberbridge/fem/dcb_common.h"
+#include "specimen_mesh.h"
 
 #include <deal.II/grid/tria_description.h>
 
@@ -15,6 +17,12 @@ using namespace dealii;
 template <int dim>
 DcbGeometry make_dcb_mesh(const specimen::Specimen& specimen, const FemParameters& prm,
                           parallel::distributed::Triangulation<dim>& triangulation) {
+  if (!prm.mesh.file.empty()) {
+    if constexpr (dim == 2)
+      return read_specimen_mesh(specimen, prm, triangulation);
+    else
+      throw InputError("FEM/Mesh file: reads 2D meshes only; set FEM/Dimension = 2");
+  }
   // x and y lines from dcb_mesh_lines (one element per advance, graded heights).
   const DcbMeshLines lines = dcb_mesh_lines(specimen, prm);
   DcbGeometry g;

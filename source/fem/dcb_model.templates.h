@@ -538,7 +538,8 @@ template <int dim>
 double DcbModel<dim>::far_field_j() const {
   return domain_j(far_field_j_weight(specimen_.initial_crack, specimen_.arm_thickness(),
                                      crack_.x_tip(), prm_.j_domain.half_width_elements,
-                                     geometry_.dx, geometry_.x_lines.back()),
+                                     geometry_.dx, geometry_.x_lines.back(),
+                                     geometry_.x_last_end_feature),
                   false);
 }
 

@@ -23,12 +23,20 @@ inline Ramp tip_j_weight(double x_tip, unsigned elements, double dx) {
 }
 
 /// J_ff: q = 1 over the whole zone, ramps in the free arms between load line and notch and one
-/// arm thickness ahead of the tip strip (so no crack-face term), kinks on mesh lines.
+/// arm thickness ahead of the tip strip (so no crack-face term), kinks on mesh lines. The rising
+/// ramp starts at 0.2 a0, or one arm thickness past `x_end_feature` (an end block's edge,
+/// DcbGeometry): a free face there has a re-entrant corner whose singular energy density Gauss
+/// quadrature of the face term would integrate poorly (docs/design.md section 2, "Specimen
+/// meshes").
 inline Ramp far_field_j_weight(double a0, double arm_thickness, double x_tip, unsigned elements,
-                               double dx, double x_end) {
+                               double dx, double x_end, double x_end_feature = 0) {
   auto snap = [&](double x) { return std::round(x / dx) * dx; };
   const double x2 = x_tip + elements * dx;
-  return {snap(0.2 * a0), snap(0.8 * a0), x2, std::min(snap(x2 + arm_thickness), x_end)};
+  const double x0 =
+      x_end_feature > 0
+          ? std::max(snap(0.2 * a0), std::ceil((x_end_feature + arm_thickness) / dx - 1e-9) * dx)
+          : snap(0.2 * a0);
+  return {x0, snap(0.8 * a0), x2, std::min(snap(x2 + arm_thickness), x_end)};
 }
 
 /// This rank's part of int_V (sigma_i1 u_i,1 - W) q,1 dV over its owned cells (Moran & Shih;

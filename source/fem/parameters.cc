@@ -50,6 +50,18 @@ void FemParameters::Mesh::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Width elements", "0", Integer(0),
                     "3D only: element layers across the width (0: width / element size, "
                     "rounded, at least 1).");
+  prm.declare_entry("Mesh file", "", dealii::Patterns::Anything(),
+                    "2D only: the specimen mesh to read instead of the generated rectangle, a "
+                    "Gmsh .geo (meshed by gmsh when the run starts) or .msh (format 2 or 4) file, "
+                    "relative to the scene, coordinates in mm. Physical surfaces 1 (upper arm, y > "
+                    "0) and 2 (lower "
+                    "arm); the crack plane y = 0 as two coincident curves, one per arm, with "
+                    "nodes every Element size from the load line x = 0 to Specimen/Length. A "
+                    ".geo gets the numbers L, a0, h, dx (mm), layers and grading from the scene "
+                    "(mesh/README.md). Empty: the generated rectangle.");
+  prm.declare_entry("Mesh file parameters", "", dealii::Patterns::Anything(),
+                    "More numbers for a .geo Mesh file, as name: value pairs separated by "
+                    "commas, lengths in mm (for example taper: 0.02, block_length: 12.7).");
 }
 
 void FemParameters::Mesh::parse_parameters(dealii::ParameterHandler& prm) {
@@ -59,6 +71,8 @@ void FemParameters::Mesh::parse_parameters(dealii::ParameterHandler& prm) {
   degree = prm.get("Polynomial degree") == "auto" ? 0 : prm.get_integer("Polynomial degree");
   dimension = prm.get_integer("Dimension");
   width_elements = prm.get_integer("Width elements");
+  file = prm.get("Mesh file");
+  file_parameters = prm.get("Mesh file parameters");
 }
 
 void FemParameters::Mesh::validate() const {
@@ -67,6 +81,9 @@ void FemParameters::Mesh::validate() const {
   require(min_layers >= 1, "Minimum layers per arm", "must be >= 1");
   require(degree <= 2, "Polynomial degree", "must be 1, 2 or auto");
   require(dimension == 2 || dimension == 3, "Dimension", "must be 2 or 3");
+  require(file.empty() || dimension == 2, "Mesh file",
+          "reads 2D meshes only; set FEM/Dimension = 2 or leave Mesh file empty");
+  require(file_parameters.empty() || !file.empty(), "Mesh file parameters", "needs a Mesh file");
 }
 
 void FemParameters::Elasticity3d::declare_parameters(dealii::ParameterHandler& prm) {

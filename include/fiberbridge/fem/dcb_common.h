@@ -39,7 +39,8 @@ dealii::SymmetricTensor<4, dim> orthotropic_stiffness(const specimen::Material& 
 /// Weight q(x) of the domain J integral: 0 outside [x0, x3], 1 on [x1, x2], linear between.
 /// q depends on x only, so the strip spans both arms (and the whole width in 3D) and the top,
 /// bottom and side faces (n_x = 0, traction-free) add nothing; its kinks sit on mesh lines, so
-/// Gauss quadrature is exact.
+/// Gauss quadrature is exact. Free faces with n_x != 0 (a read mesh: a tapered arm) add
+/// int W n_x q ds (j_integrals.cc).
 struct Ramp {
   double x0, x1, x2, x3;
   double value(double x) const {
@@ -77,6 +78,10 @@ struct DcbMeshLines {
 /// with 4 layers (docs/design.md section 2, "FEM", "Mesh that follows the specimen").
 inline constexpr double kMaxCrackPlaneAspect = 4;
 DcbMeshLines dcb_mesh_lines(const specimen::Specimen& specimen, const FemParameters& p);
+/// The element length along the crack plane, a0 / round(a0 / Element size): a mesh line at the
+/// notch end so that every advance is one element (the generated and the read meshes alike).
+/// Throws InputError if the notch spans too few elements for the far-field J domain.
+double crack_plane_step(const specimen::Specimen& specimen, const FemParameters& p);
 
 /// Parasitic-shear indicator of Q1 elements of length `element_length` in an arm of thickness
 /// `arm_thickness`: in pure bending (curvature k) a bilinear element cannot represent

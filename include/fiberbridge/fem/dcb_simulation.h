@@ -42,6 +42,13 @@ struct FemParameters {
     unsigned int dimension = 2;
     /// 3D only: element layers across the width (0: width / element size, rounded, at least 1).
     unsigned int width_elements = 0;
+    /// A specimen mesh to read instead of the generated rectangle (specimen_mesh.h): a Gmsh .geo
+    /// (meshed by gmsh at run time) or .msh file; empty: the generated rectangle. The app
+    /// resolves a relative path against the scene's directory.
+    std::string file;
+    /// Gmsh numbers for a .geo file beyond those the scene gives it (specimen_mesh.h), as
+    /// "name: value, name: value".
+    std::string file_parameters;
 
     static void declare_parameters(dealii::ParameterHandler& prm);
     void parse_parameters(dealii::ParameterHandler& prm);
