@@ -1,6 +1,7 @@
 #include "fiberbridge/app/resume_store.h"
 
 #include "fiberbridge/app/result_codec.h"
+#include "fiberbridge/app/scene.h"
 #include "fiberbridge/core/binary_archive.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
@@ -10,6 +11,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <set>
@@ -96,6 +99,21 @@ Fingerprint simulation_fingerprint(SceneContext& ctx) {
     for (double x : {m.E_L, m.E_T, m.G_LT, m.nu_LT, m.density, m.E_R_over_E_L, m.nu_LR, m.nu_RT})
       v += exact_number(x) + " ";
     return v + (m.plane_stress ? "plane stress" : "plane strain");
+  });
+  // A specimen mesh is named by its path: its content must match too, or a resumed FEM record
+  // would be one of another specimen.
+  std::string file;
+  for (const auto& [key, value] : fp)
+    if (key == "FEM/Mesh file")
+      file = value;
+  add("FEM/Mesh file content", [&] {
+    if (file.empty())
+      return std::string("none");
+    std::ifstream in(resolve_scene_path(file, ctx.scene_file), std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return std::to_string(bytes.str().size()) + " bytes, hash " +
+           std::to_string(std::hash<std::string>{}(bytes.str()));
   });
   return fp;
 }

@@ -298,6 +298,28 @@ TEST(Scenes, GmshSpecimenScenesRun) {
                        "FEM/Mesh file");
 }
 
+// A resumed run must not restore the FEM record of another specimen: the mesh file's content is
+// part of the record's fingerprint, so an edited .geo under the same name is refused by key.
+TEST(Scenes, ResumeRefusesAnEditedSpecimenMesh) {
+#ifndef FIBERBRIDGE_HAVE_FEM
+  GTEST_SKIP() << "FEM module not built (FIBERBRIDGE_MODELS)";
+#endif
+  fs::remove_all(work("gmsh_resume"));
+  fs::create_directories(work("gmsh_resume"));
+  const fs::path geo = work("gmsh_resume") / "specimen.geo";
+  fs::copy_file(source("mesh/dcb_specimen.geo"), geo);
+  const std::string args = "run " + source("prm/fem_tapered_composite.prm") +
+                           " --set 'FEM/Output every=0' --set 'FEM/Mesh file=" + geo.string() +
+                           "' --set 'Output directory=" + (work("gmsh_resume") / "out").string() +
+                           "'";
+  ASSERT_EQ(run("gmsh_resume_run", args).exit_code, 0);
+  EXPECT_EQ(run("gmsh_resume_same", args + " --resume").exit_code, 0);
+  std::ofstream(geo, std::ios::app) << "// an edit\n";
+  const auto r = run("gmsh_resume_edited", args + " --resume");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("FEM/Mesh file content"), std::string::npos) << r.err;
+}
+
 // An old key name still runs and the run's notes in summary.json say what replaced it (issue 14
 // section 3; the beam's notes are new with Beam/Newton iterations, so its path is checked whole).
 TEST(Scenes, OldBeamKeyRunsWithADeprecationNote) {
