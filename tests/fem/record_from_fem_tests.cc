@@ -8,6 +8,7 @@
 #include "fiberbridge/analysis/synthetic_record.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/fem/dcb_simulation.h"
+#include "fiberbridge/law/exponential_law.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
 
 #include <gtest/gtest.h>
@@ -89,4 +90,54 @@ TEST(RecordFromFem, ReduceRecoversTheFemEnergyRCurve) {
   // The bounds are the measured values plus half the 1 mm -> 1.5 mm change.
   EXPECT_LT(median, 0.03);
   EXPECT_LT(p90, 0.06);
+}
+
+// End blocks (mesh/dcb_specimen.geo, 12.7 x 10 mm rounded to 13.6 mm, of the arm's material) on
+// an LEFM composite at J_tip 500: the record of the blocked FEM, reduced. R by direct energy,
+// dD/(B da), needs no block correction (the blocks store no energy that changes with a), so it
+// must recover J_tip as on plain arms. ASTM D5528's N assumes rigid blocks; these are not (they
+// take 57 % of a rigid block's compliance, docs/verification.md "Specimen meshes from Gmsh"), so
+// MBT with N reads high near the notch (printed; docs/verification.md).
+TEST(RecordFromFem, EndBlocksNeedNoCorrectionForDirectEnergy) {
+  const specimen::Specimen s = thin_dcb_case::specimen();
+  fem::FemParameters prm;
+  prm.steady_state.window = 1.0; // the whole ligament
+  prm.mesh.file = std::string(FIBERBRIDGE_SOURCE_DIR) + "/mesh/dcb_specimen.geo";
+  prm.mesh.file_parameters = "block_length: 12.7, block_height: 10";
+  constexpr double j_tip = 500;
+  auto sim = fem::simulate_dcb(s, thin_dcb_case::material(), law::NoBridgingLaw(), j_tip, prm);
+  sim.rcurve.resize(thin_dcb_case::rising_part(sim).rcurve.size());
+  SyntheticRecordOptions so;
+  so.crack_reading_interval = 2;
+  so.seed = 5;
+  const std::string path = ::testing::TempDir() + "fb_" + std::to_string(::getpid()) + "_blk.csv";
+  write_test_record_csv(path, make_synthetic_record(sim, so, "fem"),
+                        describe_synthetic_record(sim, so));
+  const auto rec = read_test_records(path).at(0);
+  std::remove(path.c_str());
+  TestSpecimen sp;
+  sp.width = s.width;
+  sp.arm_thickness = s.arm_thickness();
+  const auto plain = reduce_record(rec, sp);
+  sp.pin_to_block_edge = 7 * s.initial_crack / 18; // l2: the block's 7 elements of a0 / 18
+  sp.pin_to_arm_midplane = 1e-6; // the load acts on the end face, not on a pin above the arm
+  const auto with_n = reduce_record(rec, sp);
+  std::vector<double> rel;
+  std::printf("  a_mm R_energy R_MBT R_MBT_with_N\n");
+  for (std::size_t i = 0; i < plain.a.size(); ++i) {
+    if (plain.a[i] - plain.a0 < plain.window / 2 || plain.a.back() - plain.a[i] < plain.window / 2)
+      continue;
+    rel.push_back(std::abs(plain.R_energy[i] / j_tip - 1));
+    if (i % 5 == 0)
+      std::printf("  %.1f %.1f %.1f %.1f\n", plain.a[i] / mm, plain.R_energy[i], plain.R_MBT[i],
+                  with_n.R_MBT[i]);
+  }
+  ASSERT_GT(rel.size(), 30u);
+  std::sort(rel.begin(), rel.end());
+  // The plain-arm twin above measures median 2.05 % at 1 mm elements and 3.1 % at 1.5 mm, from
+  // the FEM's one-element advances; here (1.94 mm, LEFM) median 0.4 %, max 1.6 %. Bounds: the
+  // plain twin's at 1.5 mm (3 %, and its 90th percentile 6 % for the largest row).
+  std::printf("direct energy vs J_tip: median %.4f, max %.4f\n", rel[rel.size() / 2], rel.back());
+  EXPECT_LT(rel[rel.size() / 2], 0.03);
+  EXPECT_LT(rel.back(), 0.06);
 }
