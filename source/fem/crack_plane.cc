@@ -409,6 +409,27 @@ void CrackPlane<dim>::opening_operator(unsigned p, const IndexSet& owned, Vec& c
 }
 
 template <int dim>
+void CrackPlane<dim>::station_opening_operator(unsigned ix, double width, const IndexSet& owned,
+                                               Vec& c) const {
+  std::vector<dof_index> idx;
+  std::vector<double> val;
+  for (unsigned iz = 0; iz < n_z_; ++iz) {
+    const auto& n = nodes_[node_index(ix, iz)];
+    const double w = node_zw_[iz] / width;
+    if (owned.is_element(n.top[1])) {
+      idx.push_back(n.top[1]);
+      val.push_back(w);
+    }
+    if (owned.is_element(n.bottom[1])) {
+      idx.push_back(n.bottom[1]);
+      val.push_back(-w);
+    }
+  }
+  c.add(idx, val);
+  c.compress(VectorOperation::add);
+}
+
+template <int dim>
 std::vector<double> CrackPlane<dim>::node_openings(const Vec& u_ghost) const {
   std::vector<double> o(nodes_.size());
   for (unsigned a = 0; a < nodes_.size(); ++a)

@@ -67,6 +67,10 @@ public:
   /// Adds to c (laid out on `owned`, zero) the operator with c . u = the opening of point p,
   /// not condensed.
   void opening_operator(unsigned p, const dealii::IndexSet& owned, Vec& c) const;
+  /// Adds to c (laid out on `owned`, zero) the operator with c . u = station_opening(ix, ...):
+  /// the controlled opening of the crack-tip opening control (docs/design.md section 2).
+  void station_opening_operator(unsigned ix, double width, const dealii::IndexSet& owned,
+                                Vec& c) const;
 
   // Measurements (u ghosted, identical on every rank).
   std::vector<double> node_openings(const Vec& u_ghost) const;

@@ -29,6 +29,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -79,7 +80,22 @@ private:
   void sync() { u_ghost_ = u_; }
   // Growth.
   bool load_to_critical();
+  bool load_to_critical_by_opening();
   void release_tip();
+  /// Re-equilibrates after a release at fixed load-point opening; where that fails, switches
+  /// to the crack-tip opening control (docs/design.md section 2, "Crack-tip opening control").
+  void re_equilibrate(double stored_before, const Vec& u_before, double load_before);
+  // Crack-tip opening control: the opening of the node next behind the tip is prescribed and
+  // the load-point opening is an unknown (a bordered Newton).
+  void switch_to_tip_control(const std::string& failure);
+  [[noreturn]] void fail_under_tip_control(const std::string& what) const;
+  unsigned control_station() const { return crack_.tip_station() - 1; }
+  double control_opening();
+  bool load_to_critical_at_tip();
+  void solve_at_tip_opening(double eta);
+  bool bordered_newton(const Vec& c, const Vec& e, double eta, std::string& diagnosis);
+  void account_release();
+  void note_snap_back();
   // Measurements (on u_ghost_).
   std::vector<double> openings() const { return crack_.openings(u_ghost_); }
   double domain_j(const Ramp& q, bool crack_face_term) const;
@@ -160,7 +176,24 @@ private:
   Vec u_, u_ghost_, scratch_ghost_, residual_ghost_;
   double opening_ = 0;
   double work_ = 0; ///< external work per width [J/m]
-  std::vector<std::pair<double, double>> path_;
+  /// Equilibrium states since the last release: the control parameter (the load-point opening,
+  /// or the controlled tip opening under the crack-tip control), the opening and the load.
+  struct PathState {
+    double param, opening, load;
+    bool operator<(const PathState& o) const {
+      return std::tie(param, opening, load) < std::tie(o.param, o.opening, o.load);
+    }
+  };
+  std::vector<PathState> path_;
+  /// Crack-tip opening control (switched on for good where the load-point opening failed).
+  bool tip_control_ = false;
+  std::string tip_control_reason_;  ///< where and why the run switched
+  double last_control_opening_ = 0; ///< the controlled station's opening at the last record
+  /// A release under the crack-tip control whose energy drop is not yet accounted.
+  bool release_pending_ = false;
+  double release_stored_ = 0, release_opening_ = 0, release_load_ = 0;
+  double min_opening_since_record_ = 0;
+  unsigned n_turned_back_ = 0; ///< advances whose traced path went below the last critical opening
 
   result::SimulationResult result_;
   /// Wall time per section (setup, assembly, factorize, solve, J integrals, output) of this

@@ -12,6 +12,7 @@
 #include "fiberbridge/law/exponential_law.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
 #include "fiberbridge/law/seed_laws.h"
+#include "test_cases.h"
 
 #include <gtest/gtest.h>
 
@@ -238,4 +239,32 @@ TEST(FemThinArm, StrongShortLawGivesItsWholeRCurve) {
     // The zone (about 3.2-3.4 mm) is under two default elements: the run must say so.
     EXPECT_TRUE(has_note(r, "resolution: the cohesive zone is at most"));
   }
+}
+
+// Issue 13 item 4: a law three times stronger and five times shorter (30 MPa, delta_c 0.02 mm:
+// J_c 300 J/m^2, zone about 0.58 mm) lost equilibrium right after the first release under
+// load-point opening control. The run now switches to the crack-tip opening control
+// (docs/design.md section 2) and gives its whole R curve. On the short DCB with 0.25 mm elements
+// the zone spans about 2.3 elements and G_ss is measured +0.27 % off J_tip + J_c, R_J vs Eq. 2
+// 0.26 %; 2 % is the issue's bound (the 2, 1, 0.5 mm seed ladder, +7.2, +4.9, +2.7 %, fails it:
+// the error is the unresolved zone, docs/verification.md "Strong short laws"). On the default
+// 2 mm elements the run completes and must say that the zone is unresolved.
+TEST(FemThinArm, StrongerShorterLawIsTracedPastTheSnapBack) {
+  const auto law = law::make_linear_softening(30000 * kPa, 0.02 * mm);
+  const double j_tip = 100, G = j_tip + law.area();
+  ASSERT_NEAR(law.area(), 300, 1e-9);
+  fem::FemParameters prm;
+  prm.mesh.element_size = 0.25 * mm;
+  const auto fine = fem::simulate_dcb(fem_test::short_dcb(), specimen::Material(), law, j_tip, prm);
+  print(fine);
+  ASSERT_TRUE(fine.reached_steady_state);
+  EXPECT_TRUE(has_note(fine, "control: at a = "));
+  EXPECT_NEAR(fine.G_ss / G, 1.0, 0.02);
+  EXPECT_LT(result::rdelta_error_vs_eq2(fine, law, j_tip), 0.02);
+
+  const auto coarse = fem::simulate_dcb(specimen::Specimen(), specimen::Material(), law, j_tip,
+                                        fem::FemParameters());
+  ASSERT_TRUE(coarse.reached_steady_state);
+  EXPECT_TRUE(has_note(coarse, "control: at a = "));
+  EXPECT_TRUE(has_note(coarse, "resolution: the cohesive zone is at most"));
 }
