@@ -25,6 +25,23 @@ using namespace fiberbridge;
 using namespace fiberbridge::analysis;
 using units::mm;
 
+namespace {
+/// The FEM run as a raw test record (the crack read at every second row, noise seed 5), written
+/// to a file and read back as `reduce` reads a testing machine's.
+TestRecord fem_record(const result::SimulationResult& sim, const std::string& tag) {
+  SyntheticRecordOptions so;
+  so.crack_reading_interval = 2;
+  so.seed = 5;
+  const std::string path =
+      ::testing::TempDir() + "fb_" + std::to_string(::getpid()) + "_" + tag + ".csv";
+  write_test_record_csv(path, make_synthetic_record(sim, so, "fem"),
+                        describe_synthetic_record(sim, so));
+  auto rec = read_test_records(path).at(0);
+  std::remove(path.c_str());
+  return rec;
+}
+} // namespace
+
 TEST(RecordFromFem, ReduceRecoversTheFemEnergyRCurve) {
   const specimen::Specimen s = thin_dcb_case::specimen();
   const specimen::Material m = thin_dcb_case::material();
@@ -41,14 +58,7 @@ TEST(RecordFromFem, ReduceRecoversTheFemEnergyRCurve) {
               sim.rcurve.size(), n, wall, sim.rcurve.front().a / mm, sim.rcurve[n - 1].a / mm,
               sim.rcurve.front().R_energy, sim.rcurve[n - 1].R_energy);
   sim.rcurve.resize(n);
-  SyntheticRecordOptions so;
-  so.crack_reading_interval = 2;
-  so.seed = 5;
-  const std::string path = ::testing::TempDir() + "fb_" + std::to_string(::getpid()) + "_fem.csv";
-  write_test_record_csv(path, make_synthetic_record(sim, so, "fem"),
-                        describe_synthetic_record(sim, so));
-  const auto rec = read_test_records(path).at(0);
-  std::remove(path.c_str());
+  const auto rec = fem_record(sim, "fem");
   TestSpecimen sp;
   sp.width = s.width;
   sp.arm_thickness = s.arm_thickness();
@@ -107,14 +117,7 @@ TEST(RecordFromFem, EndBlocksNeedNoCorrectionForDirectEnergy) {
   constexpr double j_tip = 500;
   auto sim = fem::simulate_dcb(s, thin_dcb_case::material(), law::NoBridgingLaw(), j_tip, prm);
   sim.rcurve.resize(thin_dcb_case::rising_part(sim).rcurve.size());
-  SyntheticRecordOptions so;
-  so.crack_reading_interval = 2;
-  so.seed = 5;
-  const std::string path = ::testing::TempDir() + "fb_" + std::to_string(::getpid()) + "_blk.csv";
-  write_test_record_csv(path, make_synthetic_record(sim, so, "fem"),
-                        describe_synthetic_record(sim, so));
-  const auto rec = read_test_records(path).at(0);
-  std::remove(path.c_str());
+  const auto rec = fem_record(sim, "blk");
   TestSpecimen sp;
   sp.width = s.width;
   sp.arm_thickness = s.arm_thickness();
