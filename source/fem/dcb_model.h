@@ -117,8 +117,9 @@ private:
   double stored_energy() const;
   double load_per_width();
   result::RCurvePoint record_advance();
-  /// The shared rule (result::find_steady_state); reports and returns true once reached.
-  bool reached_steady_state(bool final_state);
+  /// The shared rule (result::find_steady_state) on the advances so far: the run stops once it
+  /// holds. The rule is reported by result::finish_rcurve at the end of run().
+  bool reached_steady_state() const;
   void output_fields(unsigned advance);
   /// The run's closing notes, method lines and figures.
   void summarize(Clock::time_point start);

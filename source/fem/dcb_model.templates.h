@@ -16,6 +16,7 @@
 //   uses sums broadcast from rank 0, so all ranks take the same branch.
 #include "dcb_model.h"
 #include "j_integrals.h"
+#include "root_j_secant.h"
 
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
@@ -480,12 +481,7 @@ bool DcbModel<dim>::load_to_critical_by_opening() {
       ++n_unstable_;
     return false;
   }
-  const double target = std::sqrt(j_tip_);
-  struct Sample {
-    double opening, root_j;
-  };
-  Sample lo{opening_, std::sqrt(std::max(J, 0.0))}, hi{0, 0};
-  bool have_hi = false;
+  RootJSecant search(j_tip_, opening_, J);
   double next;
   const auto& rc = result_.rcurve;
   const std::size_t n = rc.size();
@@ -495,35 +491,20 @@ bool DcbModel<dim>::load_to_critical_by_opening() {
   else if (n == 2)
     next = 2 * rc[1].load_point_opening - rc[0].load_point_opening;
   else if (J > 0)
-    next = opening_ * target / lo.root_j;
+    next = opening_ * std::sqrt(j_tip_) / std::sqrt(J);
   else
     next = specimen::cbt_opening(
         specimen_, material_,
         specimen::cbt_load_at_crack_length(specimen_, material_, j_tip_, specimen_.initial_crack),
         specimen_.initial_crack);
   for (int it = 0; it < 40; ++it) {
-    if (have_hi && !(next > lo.opening && next < hi.opening))
-      next = 0.5 * (lo.opening + hi.opening);
-    if (!have_hi && !(next > lo.opening))
-      next = 1.1 * lo.opening;
-    solve_at(next);
+    solve_at(search.safeguard(next));
     ++n_trials_;
     J = timed_tip_j();
     path_.push_back({opening_, opening_, load_per_width()});
     if (std::abs(J / j_tip_ - 1) <= prm_.nonlinear.tip_tolerance)
       return true;
-    const Sample s{opening_, std::sqrt(std::max(J, 0.0))};
-    if (J < j_tip_)
-      lo = s;
-    else {
-      hi = s;
-      have_hi = true;
-    }
-    if (have_hi)
-      next =
-          lo.opening + (target - lo.root_j) * (hi.opening - lo.opening) / (hi.root_j - lo.root_j);
-    else
-      next = s.root_j > 0 ? opening_ * target / s.root_j : 2 * opening_;
+    next = search.add(opening_, J);
   }
   throw ComputationError("FEM: could not bring the tip J to J_tip = " + fmt(j_tip_) +
                          " J/m^2 with the tip at " + fmt(crack_.x_tip() / units::mm) +
@@ -596,32 +577,23 @@ double DcbModel<dim>::control_opening() {
 
 template <int dim>
 bool DcbModel<dim>::load_to_critical_at_tip() {
-  // The secant on sqrt(J) of load_to_critical_by_opening(), in the controlled opening eta: near
-  // the tip the opening grows as sqrt(J) (the LEFM field), and unlike the load-point opening it
-  // grows monotonically while the fresh segment softens.
-  const double target = std::sqrt(j_tip_);
-  struct Sample {
-    double eta, root_j;
-  };
-  Sample lo{control_opening(), 0.0}, hi{0, 0};
+  // The secant of load_to_critical_by_opening() (root_j_secant.h), in the controlled opening
+  // eta: unlike the load-point opening it grows monotonically while the fresh segment softens.
+  const double eta0 = control_opening();
+  double J = 0;            // right after a release the state has no tip J of its own
   if (!release_pending_) { // an equilibrium state: its tip J is a sample
-    const double J = timed_tip_j();
+    J = timed_tip_j();
     if (J >= (1 - prm_.nonlinear.tip_tolerance) * j_tip_) {
       if (J > (1 + prm_.nonlinear.tip_tolerance) * j_tip_)
         ++n_unstable_;
       return false;
     }
-    lo.root_j = std::sqrt(std::max(J, 0.0));
   }
-  bool have_hi = false;
+  RootJSecant search(j_tip_, eta0, J);
   // At criticality the field next to the tip repeats from advance to advance.
-  double next = last_control_opening_ > lo.eta ? last_control_opening_ : 2 * lo.eta;
-  double J = 0;
+  double next = last_control_opening_ > eta0 ? last_control_opening_ : 2 * eta0;
   for (int it = 0; it < 40; ++it) {
-    if (have_hi && !(next > lo.eta && next < hi.eta))
-      next = 0.5 * (lo.eta + hi.eta);
-    if (!have_hi && !(next > lo.eta))
-      next = 1.1 * std::max(lo.eta, 1e-3 * last_control_opening_);
+    next = search.safeguard(next, 1e-3 * last_control_opening_);
     solve_at_tip_opening(next);
     ++n_trials_;
     J = timed_tip_j();
@@ -635,17 +607,7 @@ bool DcbModel<dim>::load_to_critical_at_tip() {
         ++n_turned_back_;
       return true;
     }
-    const Sample s{next, std::sqrt(std::max(J, 0.0))};
-    if (J < j_tip_)
-      lo = s;
-    else {
-      hi = s;
-      have_hi = true;
-    }
-    if (have_hi)
-      next = lo.eta + (target - lo.root_j) * (hi.eta - lo.eta) / (hi.root_j - lo.root_j);
-    else
-      next = s.root_j > 0 ? next * target / s.root_j : 2 * next;
+    next = search.add(next, J);
   }
   fail_under_tip_control("could not bring the tip J to J_tip = " + fmt(j_tip_) +
                          " J/m^2 with the tip at " + fmt(crack_.x_tip() / units::mm) +
@@ -985,13 +947,10 @@ result::RCurvePoint DcbModel<dim>::record_advance() {
 }
 
 template <int dim>
-bool DcbModel<dim>::reached_steady_state(bool final_state) {
-  const auto rule = steady_state_rule(prm_, specimen_);
-  const auto s = result::find_steady_state(result_.rcurve, specimen_.initial_crack, specimen_.width,
-                                           law_->critical_opening() > 0, rule);
-  if (s.reached || final_state)
-    result::report_steady_state(result_, s, rule, "FEM");
-  return s.reached;
+bool DcbModel<dim>::reached_steady_state() const {
+  return result::find_steady_state(result_.rcurve, specimen_.initial_crack, specimen_.width,
+                                   law_->critical_opening() > 0, steady_state_rule(prm_, specimen_))
+      .reached;
 }
 
 template <int dim>
@@ -1065,7 +1024,6 @@ result::SimulationResult DcbModel<dim>::run() {
             "no steady state: zone longer than ligament (the notch root never moved; the tip "
             "reached " +
             fmt(crack_.x_tip() / units::mm) + " mm)");
-      reached_steady_state(true); // not reached: the note and G_ss of the shared rule
       break;
     }
     load_to_critical();
@@ -1079,7 +1037,7 @@ result::SimulationResult DcbModel<dim>::run() {
       report("fem: a = " + fmt(pt.a / units::mm) + " mm, root " + fmt(pt.root / units::mm) +
              " mm, opening " + fmt(pt.load_point_opening / units::mm) + " mm, load " +
              fmt(pt.load) + " N, J_tip " + fmt(pt.J_tip) + ", R_J " + fmt(pt.R_J) + " J/m^2");
-    if (reached_steady_state(false))
+    if (reached_steady_state())
       break;
     ++advance;
     if (prm_.output.vtu_every > 0 && advance % prm_.output.vtu_every == 0)
@@ -1089,10 +1047,13 @@ result::SimulationResult DcbModel<dim>::run() {
     release_tip();
     re_equilibrate(before, u_before, pt.load / specimen_.width);
   }
+  // The post-processing all three models share: R_energy, the steady-state rule and its note,
+  // R_J against Eq. 2 (docs/design.md section 2, "Steady state and G_ss").
+  result::finish_rcurve(result_, *law_, j_tip_, specimen_.initial_crack, specimen_.width,
+                        steady_state_rule(prm_, specimen_), "FEM");
   note_snap_back();
   output_fields(advance + 1);
   write_interface_csv(output_dir_, comm_, dim, crack_.interface(), openings(), crack_.point_z());
-  result::fill_r_energy(result_.rcurve, specimen_.width);
   summarize(start);
   return result_;
 }
