@@ -77,6 +77,7 @@ private:
   double opening_rate(double t) const;
   void advance_tip(double j_measured);
   void set_growth_window();
+  /// The method lines, the run's diagnoses and the shared post-processing (dcb_report.cc).
   void finish(result::SimulationResult& r) const;
 
   specimen::Specimen spec_;
