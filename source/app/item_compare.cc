@@ -3,6 +3,7 @@
 // specimen).
 #include "fiberbridge/analysis/model_comparison.h"
 #include "fiberbridge/app/items.h"
+#include "fiberbridge/app/section.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/plot.h"
@@ -14,38 +15,38 @@
 
 namespace fiberbridge::app {
 
-void declare_compare_section(dealii::ParameterHandler& prm) {
-  prm.enter_subsection("Compare");
-  prm.declare_entry("Closed loop", "true", dealii::Patterns::Bool(),
-                    "Extract laws (Eq. 6 and dR/ddelta) back from each simulated R(delta_root) "
-                    "and compare them with the input law.");
-  prm.declare_entry("Intervals", "40", dealii::Patterns::Integer(4),
-                    "n of Eq. 6 for the closed loop (the simulated R curve has one point per tip "
-                    "advance, so n must stay below the number of advances in the zone).");
-  prm.declare_entry("Smoothing half-width", "2", dealii::Patterns::Integer(1),
-                    "k of the slope fits for the closed loop.");
-  prm.leave_subsection();
-}
-
 namespace {
-struct CompareOptions {
+
+/// Compare: the closed loop through the extraction method and its n, k.
+struct CompareSection {
   bool closed_loop = true;
   int intervals = 40, half_width = 2;
+
+  static void declare_parameters(dealii::ParameterHandler& prm) {
+    prm.declare_entry("Closed loop", "true", dealii::Patterns::Bool(),
+                      "Extract laws (Eq. 6 and dR/ddelta) back from each simulated "
+                      "R(delta_root) and compare them with the input law.");
+    prm.declare_entry("Intervals", "40", dealii::Patterns::Integer(4),
+                      "n of Eq. 6 for the closed loop (the simulated R curve has one point per "
+                      "tip advance, so n must stay below the number of advances in the zone).");
+    prm.declare_entry("Smoothing half-width", "2", dealii::Patterns::Integer(1),
+                      "k of the slope fits for the closed loop.");
+  }
+  void parse_parameters(dealii::ParameterHandler& prm) {
+    closed_loop = prm.get_bool("Closed loop");
+    intervals = prm.get_integer("Intervals");
+    half_width = prm.get_integer("Smoothing half-width");
+  }
 };
 
-CompareOptions parse_compare_section(dealii::ParameterHandler& prm) {
-  CompareOptions o;
-  prm.enter_subsection("Compare");
-  o.closed_loop = prm.get_bool("Closed loop");
-  o.intervals = prm.get_integer("Intervals");
-  o.half_width = prm.get_integer("Smoothing half-width");
-  prm.leave_subsection();
-  return o;
-}
 } // namespace
 
+void declare_compare_section(dealii::ParameterHandler& prm) {
+  declare_section<CompareSection>(prm, "Compare");
+}
+
 void check_compare_item(SceneContext& ctx) {
-  parse_compare_section(*ctx.prm);
+  parse_section<CompareSection>(*ctx.prm, "Compare");
   if (!ctx.run_items.count("beam") && !ctx.run_items.count("fem") && !ctx.run_items.count("mpm"))
     throw InputError("Run: 'compare' needs at least one simulation (beam, fem, mpm) in the same "
                      "scene");
@@ -56,7 +57,7 @@ void run_compare_item(SceneContext& ctx) {
   if (ctx.results.empty())
     throw InputError("Run: 'compare' needs at least one simulation (beam, fem, mpm) in the same "
                      "scene");
-  const CompareOptions o = parse_compare_section(*ctx.prm);
+  const auto o = parse_section<CompareSection>(*ctx.prm, "Compare");
   const bool loop = o.closed_loop;
   const int n = o.intervals;
   const int k = o.half_width;

@@ -6,7 +6,9 @@
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/result_codec.h"
 #include "fiberbridge/app/scene.h"
+#include "fiberbridge/app/section.h"
 #include "fiberbridge/app/task_distributor.h"
+#include "fiberbridge/app/test_section.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/output_guard.h"
@@ -21,7 +23,6 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
-#include <sstream>
 
 namespace fiberbridge::app {
 
@@ -32,39 +33,68 @@ using dealii::Patterns::Selection;
 using units::kPa;
 using units::mm;
 
+/// Identify: the bounds, weights and optimizer of the identification and its beam forward model.
+struct IdentifySection : identify::IdentifySettings {
+  bool per_record = false; ///< also identify each record alone
+
+  static void declare_parameters(dealii::ParameterHandler& prm) {
+    prm.declare_entry("Delta c min", "0.2", Double(0), "Lower bound of delta_c (mm).");
+    prm.declare_entry("Delta c max", "40", Double(0), "Upper bound of delta_c (mm).");
+    prm.declare_entry("Stress max", "20000", Double(0),
+                      "Upper bound of sigma_1 (kPa); sigma_2 <= sigma_1, both >= 1e-3 of it.");
+    prm.declare_entry("J tip min", "20", Double(0), "Lower bound of J_tip (J/m^2).");
+    prm.declare_entry("J tip max", "3000", Double(0), "Upper bound of J_tip (J/m^2).");
+    prm.declare_entry(
+        "Load scatter", "0.02", Double(0),
+        "Expected load misfit as a fraction of the peak load (weights the load rows).");
+    prm.declare_entry("Crack scatter", "1", Double(0),
+                      "Expected crack-reading misfit in mm (weights the fresh crack readings).");
+    prm.declare_entry("Calibrate modulus", "true", Bool(),
+                      "E_L from each record's initial compliance by corrected beam theory; false: "
+                      "Material/E_L as given.");
+    prm.declare_entry("Compliance low", "0.1", Double(0, 1),
+                      "The initial compliance is fitted over the rows before the first crack jump "
+                      "with a load between these fractions of the peak.");
+    prm.declare_entry("Compliance high", "0.5", Double(0, 1), "See Compliance low.");
+    prm.declare_entry(
+        "Large displacement correction", "true", Bool(),
+        "Map the beam's small-rotation states onto large rotations with ISO 15024's F and N.");
+    prm.declare_entry("Algorithm", "bobyqa", Selection("bobyqa|sbplx"),
+                      "NLopt bounded derivative-free method.");
+    prm.declare_entry("Max evaluations", "300", Integer(10), "Misfit evaluations per start.");
+    prm.declare_entry("Starts", "2", Integer(1), "Optimizer starts (different delta_c guesses).");
+    prm.declare_entry("Tolerance", "1e-4", Double(0, 1), "Relative change of the misfit to stop.");
+    prm.declare_entry("Number of elements", "160", Integer(4),
+                      "Beam elements on the ligament of the forward model.");
+    prm.declare_entry("Tip advance", "1", Double(0), "Beam tip advance of the forward model (mm).");
+    prm.declare_entry("Per record", "false", Bool(),
+                      "Also identify each record alone (identify.per_record in summary.json).");
+  }
+  void parse_parameters(dealii::ParameterHandler& prm) {
+    delta_c_min = prm.get_double("Delta c min") * mm;
+    delta_c_max = prm.get_double("Delta c max") * mm;
+    stress_max = prm.get_double("Stress max") * kPa;
+    j_tip_min = prm.get_double("J tip min");
+    j_tip_max = prm.get_double("J tip max");
+    load_scatter = prm.get_double("Load scatter");
+    crack_scatter = prm.get_double("Crack scatter") * mm;
+    calibrate_modulus = prm.get_bool("Calibrate modulus");
+    compliance_low = prm.get_double("Compliance low");
+    compliance_high = prm.get_double("Compliance high");
+    large_displacement = prm.get_bool("Large displacement correction");
+    algorithm = prm.get("Algorithm");
+    max_evaluations = prm.get_integer("Max evaluations");
+    starts = prm.get_integer("Starts");
+    relative_tolerance = prm.get_double("Tolerance");
+    beam.n_elements = prm.get_integer("Number of elements");
+    beam.tip_advance = prm.get_double("Tip advance") * mm;
+    per_record = prm.get_bool("Per record");
+    validate("Identify");
+  }
+};
+
 void declare_identify_section(dealii::ParameterHandler& prm) {
-  prm.enter_subsection("Identify");
-  prm.declare_entry("Delta c min", "0.2", Double(0), "Lower bound of delta_c (mm).");
-  prm.declare_entry("Delta c max", "40", Double(0), "Upper bound of delta_c (mm).");
-  prm.declare_entry("Stress max", "20000", Double(0),
-                    "Upper bound of sigma_1 (kPa); sigma_2 <= sigma_1, both >= 1e-3 of it.");
-  prm.declare_entry("J tip min", "20", Double(0), "Lower bound of J_tip (J/m^2).");
-  prm.declare_entry("J tip max", "3000", Double(0), "Upper bound of J_tip (J/m^2).");
-  prm.declare_entry("Load scatter", "0.02", Double(0),
-                    "Expected load misfit as a fraction of the peak load (weights the load rows).");
-  prm.declare_entry("Crack scatter", "1", Double(0),
-                    "Expected crack-reading misfit in mm (weights the fresh crack readings).");
-  prm.declare_entry("Calibrate modulus", "true", Bool(),
-                    "E_L from each record's initial compliance by corrected beam theory; false: "
-                    "Material/E_L as given.");
-  prm.declare_entry("Compliance low", "0.1", Double(0, 1),
-                    "The initial compliance is fitted over the rows before the first crack jump "
-                    "with a load between these fractions of the peak.");
-  prm.declare_entry("Compliance high", "0.5", Double(0, 1), "See Compliance low.");
-  prm.declare_entry(
-      "Large displacement correction", "true", Bool(),
-      "Map the beam's small-rotation states onto large rotations with ISO 15024's F and N.");
-  prm.declare_entry("Algorithm", "bobyqa", Selection("bobyqa|sbplx"),
-                    "NLopt bounded derivative-free method.");
-  prm.declare_entry("Max evaluations", "300", Integer(10), "Misfit evaluations per start.");
-  prm.declare_entry("Starts", "2", Integer(1), "Optimizer starts (different delta_c guesses).");
-  prm.declare_entry("Tolerance", "1e-4", Double(0, 1), "Relative change of the misfit to stop.");
-  prm.declare_entry("Number of elements", "160", Integer(4),
-                    "Beam elements on the ligament of the forward model.");
-  prm.declare_entry("Tip advance", "1", Double(0), "Beam tip advance of the forward model (mm).");
-  prm.declare_entry("Per record", "false", Bool(),
-                    "Also identify each record alone (identify.per_record in summary.json).");
-  prm.leave_subsection();
+  declare_section<IdentifySection>(prm, "Identify");
 }
 
 namespace {
@@ -75,49 +105,14 @@ std::string title_of(std::string name) {
   return name;
 }
 
-identify::IdentifySettings parse_identify_section(dealii::ParameterHandler& prm) {
-  identify::IdentifySettings s;
-  prm.enter_subsection("Identify");
-  s.delta_c_min = prm.get_double("Delta c min") * mm;
-  s.delta_c_max = prm.get_double("Delta c max") * mm;
-  s.stress_max = prm.get_double("Stress max") * kPa;
-  s.j_tip_min = prm.get_double("J tip min");
-  s.j_tip_max = prm.get_double("J tip max");
-  s.load_scatter = prm.get_double("Load scatter");
-  s.crack_scatter = prm.get_double("Crack scatter") * mm;
-  s.calibrate_modulus = prm.get_bool("Calibrate modulus");
-  s.compliance_low = prm.get_double("Compliance low");
-  s.compliance_high = prm.get_double("Compliance high");
-  s.large_displacement = prm.get_bool("Large displacement correction");
-  s.algorithm = prm.get("Algorithm");
-  s.max_evaluations = prm.get_integer("Max evaluations");
-  s.starts = prm.get_integer("Starts");
-  s.relative_tolerance = prm.get_double("Tolerance");
-  s.beam.n_elements = prm.get_integer("Number of elements");
-  s.beam.tip_advance = prm.get_double("Tip advance") * mm;
-  prm.leave_subsection();
-  s.validate("Identify");
-  return s;
-}
-
 /// The records of the Test section, read as `reduce` reads them.
 std::vector<analysis::TestRecord> read_scene_records(SceneContext& ctx) {
-  auto& prm = *ctx.prm;
-  prm.enter_subsection("Test");
-  const std::string files = prm.get("Files"), columns = prm.get("Columns");
-  analysis::RecordReadOptions read;
-  read.crack_back_tolerance = prm.get_double("Crack back tolerance") * mm;
-  prm.leave_subsection();
-  read.columns = analysis::RecordColumnMap::parse(columns, ctx.scene_file + ": Test/Columns");
+  const auto test = parse_section<TestSection>(*ctx.prm, "Test");
+  const analysis::RecordReadOptions read = test.read_options(ctx.scene_file);
   std::vector<analysis::TestRecord> records;
-  std::istringstream in(files);
-  for (std::string f; std::getline(in, f, ',');) {
-    f.erase(0, f.find_first_not_of(" \t"));
-    f.erase(f.find_last_not_of(" \t") + 1);
-    if (!f.empty())
-      for (auto& r : analysis::read_test_records(resolve_scene_path(f, ctx.scene_file), read))
-        records.push_back(std::move(r));
-  }
+  for (const auto& path : test.resolved_files(ctx.scene_file))
+    for (auto& r : analysis::read_test_records(path, read))
+      records.push_back(std::move(r));
   if (records.empty())
     throw InputError(ctx.scene_file + ": 'identify' needs records in Test/Files");
   return records;
@@ -324,17 +319,16 @@ run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
 } // namespace
 
 void check_identify_item(SceneContext& ctx) {
-  parse_identify_section(*ctx.prm);
+  parse_section<IdentifySection>(*ctx.prm, "Identify");
   read_scene_records(ctx); // the records are small: reading them is the check of Test
   ctx.specimen();
   ctx.material();
 }
 
 void run_identify_item(SceneContext& ctx) {
-  const auto settings = parse_identify_section(*ctx.prm);
-  ctx.prm->enter_subsection("Identify");
-  const bool per_record = ctx.prm->get_bool("Per record");
-  ctx.prm->leave_subsection();
+  const auto section = parse_section<IdentifySection>(*ctx.prm, "Identify");
+  const identify::IdentifySettings& settings = section;
+  const bool per_record = section.per_record;
   const auto records = read_scene_records(ctx);
   const specimen::Specimen specimen = ctx.specimen();
   const specimen::Material quoted = ctx.material();
@@ -391,9 +385,7 @@ void check_identified_against_simulations(SceneContext& ctx) {
   // misfit of the simulated P(opening) against the measured one (large displacements mapped as in
   // identify).
   const auto& rec = ctx.identification->records.front();
-  ctx.prm->enter_subsection("Identify");
-  const bool large = ctx.prm->get_bool("Large displacement correction");
-  ctx.prm->leave_subsection();
+  const bool large = parse_section<IdentifySection>(*ctx.prm, "Identify").large_displacement;
   Json block = Json::object();
   std::string plot = "plot 'identify_fit_0.csv' using 1:2 with points pt 7 ps 0.4 title '" +
                      title_of(rec.name) + " measured'";

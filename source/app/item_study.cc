@@ -6,6 +6,7 @@
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/result_codec.h"
 #include "fiberbridge/app/resume_store.h"
+#include "fiberbridge/app/section.h"
 #include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
@@ -176,35 +177,6 @@ std::vector<Case> stability_cases() {
 
 } // namespace
 
-void declare_study_section(dealii::ParameterHandler& prm) {
-  prm.enter_subsection("Study");
-  prm.declare_entry("Ladder models", "", dealii::Patterns::Anything(),
-                    "Models (beam, fem, mpm) whose refinement ladders run: error vs wall time.");
-  prm.declare_entry("Beam ladder", "Number of elements = 50, 100, 200, 400",
-                    dealii::Patterns::Anything(),
-                    "'Key = v1, v2, ...' (keys of the Beam section; several keys separated by "
-                    "';' vary together).");
-  prm.declare_entry("FEM ladder", "", dealii::Patterns::Anything(),
-                    "As Beam ladder, keys of the FEM section.");
-  prm.declare_entry("MPM ladder", "", dealii::Patterns::Anything(),
-                    "As Beam ladder, keys of the MPM section.");
-  prm.declare_entry("Stability models", "", dealii::Patterns::Anything(),
-                    "Models that run the stability matrix (empty = none).");
-  prm.declare_entry("Stability cases", "all", dealii::Patterns::Anything(),
-                    "Comma-separated case names, or all: stiff_initial_slope, brittle_limit, "
-                    "zone_longer_than_ligament, snap_back, extreme_orthotropy, tiny_delta_c, "
-                    "huge_delta_c, near_zero_sigma2, fast_loading (MPM only).");
-  prm.declare_entry("Target error", "0.01", dealii::Patterns::Double(0),
-                    "The cheapest ladder level whose R_J and G_ss errors are both below this is "
-                    "reported (beam, FEM).");
-  prm.declare_entry("MPM target error", "0.03", dealii::Patterns::Double(0),
-                    "The same for the MPM ladder.");
-  prm.declare_entry("Plateau tolerance", "0.05", dealii::Patterns::Double(0),
-                    "A converged run whose G_ss differs from J_tip + area by more than this "
-                    "relative amount is reported 'suspect'.");
-  prm.leave_subsection();
-}
-
 namespace {
 
 /// One model's ladder as the scene gives it: keys varied together, one value per level.
@@ -304,14 +276,6 @@ Json run_stability_case(SceneContext& ctx, const Case& c, const std::string& mod
 
 namespace {
 
-/// What the Study section asks for: ladders, stability cases and the thresholds.
-struct StudyPlan {
-  std::vector<Ladder> ladders;
-  std::vector<std::string> stability_models;
-  std::vector<Case> cases;
-  double plateau_tol = 0, target_error = 0, mpm_target = 0;
-};
-
 /// A model named in the Study section: one of the simulation items built in.
 void require_model(const std::string& model, const std::string& key) {
   if (model != "beam" && model != "fem" && model != "mpm")
@@ -320,47 +284,81 @@ void require_model(const std::string& model, const std::string& key) {
     throw InputError("Study/" + key + ": model '" + model + "' is not available in this build");
 }
 
-StudyPlan parse_study_section(dealii::ParameterHandler& prm) {
-  StudyPlan plan;
-  prm.enter_subsection("Study");
-  const auto ladder_models = split(prm.get("Ladder models"), ',');
-  std::map<std::string, std::string> ladder_text{{"beam", prm.get("Beam ladder")},
-                                                 {"fem", prm.get("FEM ladder")},
-                                                 {"mpm", prm.get("MPM ladder")}};
-  plan.stability_models = split(prm.get("Stability models"), ',');
-  const std::string case_list = prm.get("Stability cases");
-  plan.plateau_tol = prm.get_double("Plateau tolerance");
-  plan.target_error = prm.get_double("Target error");
-  plan.mpm_target = prm.get_double("MPM target error");
-  prm.leave_subsection();
-  if (ladder_models.empty() && plan.stability_models.empty())
-    throw InputError("Study: neither 'Ladder models' nor 'Stability models' names a model");
-  for (const auto& model : ladder_models) {
-    require_model(model, "Ladder models");
-    plan.ladders.push_back(parse_ladder(model, ladder_text[model]));
+/// Study: ladders, stability cases and the thresholds (a step-44 section struct, section.h).
+struct StudySection {
+  std::vector<Ladder> ladders;
+  std::vector<std::string> stability_models;
+  std::vector<Case> cases;
+  double plateau_tol = 0, target_error = 0, mpm_target = 0;
+
+  static void declare_parameters(dealii::ParameterHandler& prm) {
+    prm.declare_entry("Ladder models", "", dealii::Patterns::Anything(),
+                      "Models (beam, fem, mpm) whose refinement ladders run: error vs wall time.");
+    prm.declare_entry("Beam ladder", "Number of elements = 50, 100, 200, 400",
+                      dealii::Patterns::Anything(),
+                      "'Key = v1, v2, ...' (keys of the Beam section; several keys separated by "
+                      "';' vary together).");
+    prm.declare_entry("FEM ladder", "", dealii::Patterns::Anything(),
+                      "As Beam ladder, keys of the FEM section.");
+    prm.declare_entry("MPM ladder", "", dealii::Patterns::Anything(),
+                      "As Beam ladder, keys of the MPM section.");
+    prm.declare_entry("Stability models", "", dealii::Patterns::Anything(),
+                      "Models that run the stability matrix (empty = none).");
+    prm.declare_entry("Stability cases", "all", dealii::Patterns::Anything(),
+                      "Comma-separated case names, or all: stiff_initial_slope, brittle_limit, "
+                      "zone_longer_than_ligament, snap_back, extreme_orthotropy, tiny_delta_c, "
+                      "huge_delta_c, near_zero_sigma2, fast_loading (MPM only).");
+    prm.declare_entry("Target error", "0.01", dealii::Patterns::Double(0),
+                      "The cheapest ladder level whose R_J and G_ss errors are both below this is "
+                      "reported (beam, FEM).");
+    prm.declare_entry("MPM target error", "0.03", dealii::Patterns::Double(0),
+                      "The same for the MPM ladder.");
+    prm.declare_entry("Plateau tolerance", "0.05", dealii::Patterns::Double(0),
+                      "A converged run whose G_ss differs from J_tip + area by more than this "
+                      "relative amount is reported 'suspect'.");
   }
-  for (const auto& model : plan.stability_models)
-    require_model(model, "Stability models");
-  if (!plan.stability_models.empty()) {
-    const auto all = stability_cases();
-    const auto wanted = split(case_list, ',');
-    for (const auto& name : wanted)
-      if (name != "all" &&
-          std::none_of(all.begin(), all.end(), [&](const Case& c) { return c.name == name; }))
-        throw InputError("Study/Stability cases: unknown case '" + name + "'");
-    for (const auto& c : all)
-      if (case_list == "all" || std::find(wanted.begin(), wanted.end(), c.name) != wanted.end())
-        plan.cases.push_back(c);
-    if (plan.cases.empty())
-      throw InputError("Study/Stability cases: no known case in '" + case_list + "'");
+  void parse_parameters(dealii::ParameterHandler& prm) {
+    const auto ladder_models = split(prm.get("Ladder models"), ',');
+    std::map<std::string, std::string> ladder_text{{"beam", prm.get("Beam ladder")},
+                                                   {"fem", prm.get("FEM ladder")},
+                                                   {"mpm", prm.get("MPM ladder")}};
+    stability_models = split(prm.get("Stability models"), ',');
+    const std::string case_list = prm.get("Stability cases");
+    plateau_tol = prm.get_double("Plateau tolerance");
+    target_error = prm.get_double("Target error");
+    mpm_target = prm.get_double("MPM target error");
+    if (ladder_models.empty() && stability_models.empty())
+      throw InputError("Study: neither 'Ladder models' nor 'Stability models' names a model");
+    for (const auto& model : ladder_models) {
+      require_model(model, "Ladder models");
+      ladders.push_back(parse_ladder(model, ladder_text[model]));
+    }
+    for (const auto& model : stability_models)
+      require_model(model, "Stability models");
+    if (!stability_models.empty()) {
+      const auto all = stability_cases();
+      const auto wanted = split(case_list, ',');
+      for (const auto& name : wanted)
+        if (name != "all" &&
+            std::none_of(all.begin(), all.end(), [&](const Case& c) { return c.name == name; }))
+          throw InputError("Study/Stability cases: unknown case '" + name + "'");
+      for (const auto& c : all)
+        if (case_list == "all" || std::find(wanted.begin(), wanted.end(), c.name) != wanted.end())
+          cases.push_back(c);
+      if (cases.empty())
+        throw InputError("Study/Stability cases: no known case in '" + case_list + "'");
+    }
   }
-  return plan;
-}
+};
 
 } // namespace
 
+void declare_study_section(dealii::ParameterHandler& prm) {
+  declare_section<StudySection>(prm, "Study");
+}
+
 void check_study_item(SceneContext& ctx) {
-  const StudyPlan plan = parse_study_section(*ctx.prm);
+  const auto plan = parse_section<StudySection>(*ctx.prm, "Study");
   // Every ladder level is the model's section with the level's keys: check each as the model's
   // item would (a misspelt key or a bad value fails now, not after the coarser levels ran). The
   // stability cases' failures are outcomes of the study, not input errors.
@@ -376,7 +374,7 @@ void check_study_item(SceneContext& ctx) {
 }
 
 void run_study_item(SceneContext& ctx) {
-  const StudyPlan plan = parse_study_section(*ctx.prm);
+  const auto plan = parse_section<StudySection>(*ctx.prm, "Study");
   const auto& ladders = plan.ladders;
   const auto& stability_models = plan.stability_models;
   const auto& cases = plan.cases;

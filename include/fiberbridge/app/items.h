@@ -1,6 +1,7 @@
 #pragma once
-// Scene items: each declares its section and runs. The simulation items live beside their
-// libraries' owners (item_fem.cc, item_mpm.cc, item_beam.cc).
+// Scene items: each declares its section and runs. The declare_*_section functions enter the
+// registry (scene.cc); each declares a step-44 section struct (section.h). The simulation items
+// live beside their libraries' owners (item_fem.cc, item_mpm.cc, item_beam.cc).
 #include "fiberbridge/app/scene_context.h"
 #ifdef FIBERBRIDGE_HAVE_BEAM
 #include "fiberbridge/beam/dcb_beam.h"

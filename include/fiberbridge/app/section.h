@@ -4,7 +4,11 @@
 // side, where parse_parameters also validates (InputError naming "Section/Key"). Both are called
 // inside the section; these helpers enter and leave it. The models' parameter structs stay free
 // of deal.II (beam, mpm): their sections derive from them in the app (item_beam.cc, item_mpm.cc);
-// the FEM's fem::FemParameters follows the convention itself.
+// the FEM's fem::FemParameters follows the convention itself. Every section of a scene is one:
+// the analysis sections in items_analysis.cc (Data, Fit, Rank, Bridging), the shared ones in
+// shared_sections.h (Cohesive law, Specimen, Material), Test in test_section.h, Identify,
+// Compare and Study beside their items. A check that needs the scene's folder (a file must
+// exist) is the item's, after parsing.
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>

@@ -1,0 +1,34 @@
+#pragma once
+// The scene's `Test` section (raw DCB records), a step-44 section struct (section.h) read by both
+// `reduce` and `identify`, so that the two items see the same records the same way.
+#include "fiberbridge/analysis/test_record.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace fiberbridge::app {
+
+struct TestSection {
+  std::vector<std::string> files;     ///< as written in the scene (trimmed, empty entries dropped)
+  std::string columns;                ///< the column map as written (read_options parses it)
+  double crack_back_tolerance = 1e-3; ///< [m]
+  bool use_specimen_initial_crack = false;
+  double smoothing_window = 0; ///< [m]; 0: automatic
+  bool large_displacement_correction = true;
+  double pin_to_arm_midplane = 0, pin_to_block_edge = 0; ///< [m]; 0: the default of each
+  double plateau_fraction = 1.0 / 3.0;
+
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+
+  /// The records' paths resolved against the scene's folder; each must exist (InputError naming
+  /// the scene and Test/Files). An empty list is returned as such: the items say what they need.
+  std::vector<std::string> resolved_files(const std::string& scene_file) const;
+  /// How the records are read: the column map (errors name the scene and Test/Columns) and the
+  /// crack-back tolerance.
+  analysis::RecordReadOptions read_options(const std::string& scene_file) const;
+};
+
+} // namespace fiberbridge::app

@@ -1,0 +1,76 @@
+// The Test section (test_section.h): declarations beside the parse that reads them back.
+#include "fiberbridge/app/test_section.h"
+
+#include "fiberbridge/app/scene.h"
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
+
+#include <filesystem>
+#include <sstream>
+
+namespace fiberbridge::app {
+
+using units::mm;
+
+void TestSection::declare_parameters(dealii::ParameterHandler& prm) {
+  prm.declare_entry("Files", "", dealii::Patterns::Anything(),
+                    "Comma-separated raw DCB records (replicates), relative to the scene.");
+  prm.declare_entry("Columns", "", dealii::Patterns::Anything(),
+                    "Our column names mapped to the files' headers, e.g. 'time_s: Time (s), "
+                    "opening_mm: Extension (mm), load_N: Load (N), a_mm: Crack length (mm)'; "
+                    "optional delta_root_mm, record. Empty: the files use our names.");
+  prm.declare_entry("Use specimen initial crack", "false", dealii::Patterns::Bool(),
+                    "a0 = Specimen/Initial crack; false: each record's first crack reading.");
+  prm.declare_entry("Smoothing window", "0", dealii::Patterns::Double(0),
+                    "Window in crack length of the direct-energy slope fits in mm; 0: automatic "
+                    "(the larger of 10 reading spacings and 4 arm thicknesses).");
+  prm.declare_entry("Large displacement correction", "true", dealii::Patterns::Bool(),
+                    "ASTM D5528 / ISO 15024 F and N on MBT, CC, MCC.");
+  prm.declare_entry("Pin to arm mid-plane", "0", dealii::Patterns::Double(0),
+                    "l1 of D5528/ISO 15024 in mm; 0: half the arm thickness (hinges).");
+  prm.declare_entry("Pin to block edge", "0", dealii::Patterns::Double(0),
+                    "l2 of D5528/ISO 15024 in mm (end blocks); 0: no blocks (l2 = 0 in N).");
+  prm.declare_entry("Crack back tolerance", "1", dealii::Patterns::Double(0),
+                    "Crack readings may fall this far (mm) below the longest earlier reading "
+                    "(tracking noise) and are held at it; further is an error.");
+  prm.declare_entry("Plateau fraction", "0.333333", dealii::Patterns::Double(0.01, 1),
+                    "The plateau is the mean over this last fraction of the crack extension.");
+}
+
+void TestSection::parse_parameters(dealii::ParameterHandler& prm) {
+  files.clear();
+  std::istringstream list(prm.get("Files"));
+  for (std::string f; std::getline(list, f, ',');) {
+    const auto b = f.find_first_not_of(" \t");
+    if (b != std::string::npos)
+      files.push_back(f.substr(b, f.find_last_not_of(" \t") - b + 1));
+  }
+  columns = prm.get("Columns");
+  crack_back_tolerance = prm.get_double("Crack back tolerance") * mm;
+  use_specimen_initial_crack = prm.get_bool("Use specimen initial crack");
+  smoothing_window = prm.get_double("Smoothing window") * mm;
+  large_displacement_correction = prm.get_bool("Large displacement correction");
+  plateau_fraction = prm.get_double("Plateau fraction");
+  pin_to_arm_midplane = prm.get_double("Pin to arm mid-plane") * mm;
+  pin_to_block_edge = prm.get_double("Pin to block edge") * mm;
+}
+
+std::vector<std::string> TestSection::resolved_files(const std::string& scene_file) const {
+  std::vector<std::string> paths;
+  for (const auto& f : files) {
+    const std::string path = resolve_scene_path(f, scene_file);
+    if (!std::filesystem::exists(path))
+      throw InputError(scene_file + ": Test/Files: record '" + f + "' not found");
+    paths.push_back(path);
+  }
+  return paths;
+}
+
+analysis::RecordReadOptions TestSection::read_options(const std::string& scene_file) const {
+  analysis::RecordReadOptions read;
+  read.columns = analysis::RecordColumnMap::parse(columns, scene_file + ": Test/Columns");
+  read.crack_back_tolerance = crack_back_tolerance;
+  return read;
+}
+
+} // namespace fiberbridge::app
