@@ -68,6 +68,14 @@ bool parse(const std::vector<std::string>& args, po::options_description& desc,
   return true;
 }
 
+/// The same, with one positional option `name` taking `count` arguments (-1: all the rest).
+bool parse(const std::vector<std::string>& args, po::options_description& desc, const char* name,
+           int count, po::variables_map& vm) {
+  po::positional_options_description pos;
+  pos.add(name, count);
+  return parse(args, desc, pos, vm);
+}
+
 void add_law_options(po::options_description& d) {
   d.add_options()("type", po::value<std::string>()->default_value("trilinear"),
                   "none|linear|bilinear|trilinear|exponential")(
@@ -93,6 +101,17 @@ law::LawSpec law_from_options(const po::variables_map& vm) {
 /// Commands whose options are all named (forward, synth).
 po::positional_options_description no_positional;
 
+/// A command's output directory made ready: created, a stale summary removed (so a failed run
+/// never leaves an old one looking current), and the summary begun with the command's name.
+Json begin_command_output(const std::string& out, const std::string& command) {
+  app::ensure_directory(out);
+  app::remove_stale_summary(out);
+  Json summary;
+  summary["command"] = command;
+  summary["plots"] = Json::array();
+  return summary;
+}
+
 int cmd_run(const std::vector<std::string>& args) {
   po::options_description d("fiberbridge run SCENE.prm [options]");
   d.add_options()("scene", po::value<std::string>()->required(),
@@ -101,10 +120,8 @@ int cmd_run(const std::vector<std::string>& args) {
       "resume", po::bool_switch(),
       "continue a run that was killed: restore the work it finished (simulations, study runs, "
       "identify fits; kept in OUTPUT/resume/) and continue the MPM from its checkpoint");
-  po::positional_options_description p;
-  p.add("scene", 1);
   po::variables_map vm;
-  if (!parse(args, d, p, vm))
+  if (!parse(args, d, "scene", 1, vm))
     return 0;
   std::vector<std::string> sets;
   if (vm.count("set"))
@@ -126,10 +143,8 @@ int cmd_extract(const std::vector<std::string>& args) {
       "delta2", po::value<double>()->default_value(1.0),
       "trilinear d2 in mm")("free-breakpoints", po::bool_switch(), "fit d1, d2 too")(
       "out", po::value<std::string>()->default_value("output/extract"), "output directory");
-  po::positional_options_description p;
-  p.add("data", 1);
   po::variables_map vm;
-  if (!parse(args, d, p, vm))
+  if (!parse(args, d, "data", 1, vm))
     return 0;
   app::ExtractionOptions o;
   o.data_file = vm["data"].as<std::string>();
@@ -138,11 +153,7 @@ int cmd_extract(const std::vector<std::string>& args) {
   o.intervals = vm["intervals"].as<int>();
   o.half_width = vm["smoothing"].as<int>();
   const std::string out = vm["out"].as<std::string>();
-  app::ensure_directory(out);
-  app::remove_stale_summary(out);
-  Json summary;
-  summary["command"] = "extract";
-  summary["plots"] = Json::array();
+  Json summary = begin_command_output(out, "extract");
   const auto e = app::run_extraction(o, out, summary);
   app::FitOptions f;
   f.d1 = vm["delta1"].as<double>() * units::mm;
@@ -161,17 +172,11 @@ int cmd_rank(const std::vector<std::string>& args) {
   po::options_description d("fiberbridge rank TABLE.csv [options]");
   d.add_options()("table", po::value<std::string>()->required(), "property table CSV")(
       "out", po::value<std::string>()->default_value("output/rank"), "output directory");
-  po::positional_options_description p;
-  p.add("table", 1);
   po::variables_map vm;
-  if (!parse(args, d, p, vm))
+  if (!parse(args, d, "table", 1, vm))
     return 0;
   const std::string out = vm["out"].as<std::string>();
-  app::ensure_directory(out);
-  app::remove_stale_summary(out);
-  Json summary;
-  summary["command"] = "rank";
-  summary["plots"] = Json::array();
+  Json summary = begin_command_output(out, "rank");
   app::RankOptions o;
   o.table_file = vm["table"].as<std::string>();
   app::run_ranking(o, out, summary);
@@ -255,14 +260,11 @@ int cmd_reduce(const std::vector<std::string>& args) {
       "'time_s: Time (s), opening_mm: ..., load_N: ..., a_mm: ...'")(
       "smoothing-window", po::value<double>()->default_value(0), "mm; 0 = automatic")(
       "out", po::value<std::string>()->default_value("output/reduce"), "output directory");
-  po::positional_options_description p;
-  p.add("records", -1);
   po::variables_map vm;
-  if (!parse(args, d, p, vm))
+  if (!parse(args, d, "records", -1, vm))
     return 0;
   const std::string out = vm["out"].as<std::string>();
-  app::ensure_directory(out);
-  app::remove_stale_summary(out);
+  Json summary = begin_command_output(out, "reduce");
   app::ReduceStepOptions o;
   o.where = "fiberbridge reduce";
   o.files = vm["records"].as<std::vector<std::string>>();
@@ -272,9 +274,6 @@ int cmd_reduce(const std::vector<std::string>& args) {
   o.read.columns = analysis::RecordColumnMap::parse(vm["columns"].as<std::string>(), "--columns");
   const double w = vm["smoothing-window"].as<double>();
   o.reduce.smoothing_window = w > 0 ? w * units::mm : NAN;
-  Json summary;
-  summary["command"] = "reduce";
-  summary["plots"] = Json::array();
   const auto r = app::run_reduce(o, out, summary);
   app::write_run_summary(out, summary);
   std::cout << r.reduced.size() << " record(s); mean plateau R: energy " << r.mean.energy.plateau
