@@ -13,8 +13,6 @@
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/law_spec.h"
 
-#include <deal.II/base/mpi.h>
-
 #include <boost/program_options.hpp>
 
 #include <cstdlib>

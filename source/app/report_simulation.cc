@@ -9,7 +9,8 @@ namespace fiberbridge::app {
 void report_simulation(SceneContext& ctx, result::SimulationResult r, const std::string& size_key) {
   const auto law = ctx.law();
   const double j_tip = ctx.j_tip();
-  r.rdelta_rel_error_vs_eq2 = result::rdelta_error_vs_eq2(r, *law, j_tip);
+  // r.rdelta_rel_error_vs_eq2 is the model's own (result::finish_rcurve, or the beam's same
+  // call), against this law and J_tip.
   const std::string csv = "rcurve_" + r.model + ".csv";
   result::write_rcurve_csv(ctx.out(csv), r);
   const double G_ss_law = j_tip + law->area();

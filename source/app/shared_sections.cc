@@ -40,7 +40,6 @@ void LawSection::parse_parameters(dealii::ParameterHandler& prm) {
   table_file = prm.get("Table file");
   if (type == "bilinear" || type == "trilinear" || (type == "table" && table_file.empty()))
     points = law::parse_points_mm_kPa(prm.get("Points"), "Cohesive law/Points");
-  context = "Cohesive law";
 }
 
 void SpecimenSection::declare_parameters(dealii::ParameterHandler& prm) {
