@@ -73,8 +73,8 @@ ExtractionOutcome run_extraction(const ExtractionOptions& o, const std::string& 
     throw InputError("Data/Smoothing half-width: must lie in [1, intervals/2), got " +
                      std::to_string(o.half_width));
   ExtractionOutcome e;
-  const auto data = analysis::read_rdelta_csv(o.data_file);
-  e.curve = analysis::average_replicates(data, o.grid_points);
+  e.curve = analysis::average_replicates(o.data ? *o.data : analysis::read_rdelta_csv(o.data_file),
+                                         o.grid_points);
   analysis::SteadyStateOptions so;
   so.delta_c = o.delta_c;
   so.j_tip = o.j_tip;

@@ -3,6 +3,7 @@
 // specimen).
 #include "fiberbridge/analysis/model_comparison.h"
 #include "fiberbridge/app/items.h"
+#include "fiberbridge/app/models.h"
 #include "fiberbridge/app/section.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
@@ -11,6 +12,7 @@
 
 #include <deal.II/base/patterns.h>
 
+#include <algorithm>
 #include <iostream>
 
 namespace fiberbridge::app {
@@ -47,16 +49,18 @@ void declare_compare_section(dealii::ParameterHandler& prm) {
 
 void check_compare_item(SceneContext& ctx) {
   parse_section<CompareSection>(*ctx.prm, "Compare");
-  if (!ctx.run_items.count("beam") && !ctx.run_items.count("fem") && !ctx.run_items.count("mpm"))
-    throw InputError("Run: 'compare' needs at least one simulation (beam, fem, mpm) in the same "
-                     "scene");
+  const auto models = built_models();
+  if (std::none_of(models.begin(), models.end(),
+                   [&](const SimulationModel* m) { return ctx.run_items.count(m->name); }))
+    throw InputError("Run: 'compare' needs at least one simulation (" + model_names() +
+                     ") in the same scene");
   ctx.law_known_before_run();
 }
 
 void run_compare_item(SceneContext& ctx) {
   if (ctx.results.empty())
-    throw InputError("Run: 'compare' needs at least one simulation (beam, fem, mpm) in the same "
-                     "scene");
+    throw InputError("Run: 'compare' needs at least one simulation (" + model_names() +
+                     ") in the same scene");
   const auto o = parse_section<CompareSection>(*ctx.prm, "Compare");
   const bool loop = o.closed_loop;
   const int n = o.intervals;

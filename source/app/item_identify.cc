@@ -105,17 +105,22 @@ std::string title_of(std::string name) {
   return name;
 }
 
-/// The records of the Test section, read as `reduce` reads them.
-std::vector<analysis::TestRecord> read_scene_records(SceneContext& ctx) {
-  const auto test = parse_section<TestSection>(*ctx.prm, "Test");
-  const analysis::RecordReadOptions read = test.read_options(ctx.scene_file);
-  std::vector<analysis::TestRecord> records;
-  for (const auto& path : test.resolved_files(ctx.scene_file))
-    for (auto& r : analysis::read_test_records(path, read))
-      records.push_back(std::move(r));
-  if (records.empty())
+/// The records of the Test section, read once: `reduce`'s (it ran before, scene order), else
+/// read here, as reduce reads them, and kept in the context (identify's check reads them, its run
+/// fits them).
+const std::vector<analysis::TestRecord>& scene_records(SceneContext& ctx) {
+  if (!ctx.records) {
+    const auto test = parse_section<TestSection>(*ctx.prm, "Test");
+    const analysis::RecordReadOptions read = test.read_options(ctx.scene_file);
+    auto records = std::make_shared<std::vector<analysis::TestRecord>>();
+    for (const auto& path : test.resolved_files(ctx.scene_file))
+      for (auto& r : analysis::read_test_records(path, read))
+        records->push_back(std::move(r));
+    ctx.records = std::move(records);
+  }
+  if (ctx.records->empty())
     throw InputError(ctx.scene_file + ": 'identify' needs records in Test/Files");
-  return records;
+  return *ctx.records;
 }
 
 Json identification_json(const identify::Identification& id) {
@@ -320,18 +325,21 @@ run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
 
 void check_identify_item(SceneContext& ctx) {
   parse_section<IdentifySection>(*ctx.prm, "Identify");
-  read_scene_records(ctx); // the records are small: reading them is the check of Test
-  ctx.specimen();
-  ctx.material();
+  // The records are small: reading them is the check of Test. When reduce runs, it reads them
+  // (its check has the Test section) and hands them on.
+  if (!ctx.run_items.count("reduce"))
+    scene_records(ctx);
+  ctx.specimen_setup();
 }
 
 void run_identify_item(SceneContext& ctx) {
   const auto section = parse_section<IdentifySection>(*ctx.prm, "Identify");
   const identify::IdentifySettings& settings = section;
   const bool per_record = section.per_record;
-  const auto records = read_scene_records(ctx);
-  const specimen::Specimen specimen = ctx.specimen();
-  const specimen::Material quoted = ctx.material();
+  const auto& records = scene_records(ctx);
+  const SpecimenSetup setup = ctx.specimen_setup();
+  const specimen::Specimen& specimen = setup.specimen;
+  const specimen::Material& quoted = setup.material;
   // Each fit is a unit of work that --resume restores once finished (identify_resume.h).
   const Fingerprint inputs = identify_inputs(ctx, records);
   std::vector<std::string> units = {"identify_joint"};
@@ -369,14 +377,12 @@ void run_identify_item(SceneContext& ctx) {
   ctx.summary["identify_tasks"] = tasks;
   write_identification(ctx, *id);
   // Later simulations get the identified law, J_tip and the first record's specimen.
-  ctx.fitted_law = std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(id->law));
-  ctx.fitted_j_tip = id->j_tip;
-  specimen::Specimen s = specimen;
-  s.initial_crack = id->records.front().initial_crack;
-  specimen::Material m = quoted;
-  m.E_L = id->records.front().E_L;
-  ctx.identified_specimen = s;
-  ctx.identified_material = m;
+  ctx.handed_law = CrackLaw{std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(id->law)),
+                            id->j_tip, LawSource::identify};
+  SpecimenSetup identified{specimen, quoted, SpecimenSource::identify};
+  identified.specimen.initial_crack = id->records.front().initial_crack;
+  identified.material.E_L = id->records.front().E_L;
+  ctx.handed_specimen = identified;
   ctx.identification = id;
 }
 

@@ -6,6 +6,7 @@
 #include "fiberbridge/app/test_section.h"
 #include "fiberbridge/core/error.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fiberbridge::app {
@@ -46,19 +47,25 @@ void check_reduce_item(SceneContext& ctx) {
 }
 
 void run_reduce_item(SceneContext& ctx) {
-  auto& prm = *ctx.prm;
   const ReduceStepOptions o = reduce_options(ctx);
-  const auto r = run_reduce(o, ctx.output_dir, ctx.summary);
-  // With a measured notch-root opening, R(delta_root) feeds extract/fit (which run after reduce)
-  // unless the scene names its own Data/File.
-  if (!r.reduced.front().delta_root.empty()) {
-    prm.enter_subsection("Data");
-    if (prm.get("File").empty()) {
-      prm.set("File", ctx.out("rdelta_test.csv"));
-      ctx.summary["reduce"]["notes"].push_back("Data/File set to rdelta_test.csv: extract and fit "
-                                               "use the records' R(delta_root)");
-    }
-    prm.leave_subsection();
+  auto r = std::make_shared<const ReduceOutcome>(run_reduce(o, ctx.output_dir, ctx.summary));
+  // Handed on as typed values (docs/design.md section 4): identify fits these records, and with
+  // a measured notch-root opening on every record (run_reduce then also writes rdelta_test.csv)
+  // extract and fit take R(delta_root) unless the scene names its own Data/File.
+  ctx.reduced = r;
+  ctx.records = std::shared_ptr<const std::vector<analysis::TestRecord>>(r, &r->records);
+  const bool all_root =
+      std::all_of(r->reduced.begin(), r->reduced.end(),
+                  [](const analysis::ReducedRecord& x) { return !x.delta_root.empty(); });
+  if (all_root) {
+    ctx.rdelta_root = std::make_shared<const analysis::RDeltaData>(
+        analysis::to_rdelta(r->reduced, ctx.out("rdelta_test.csv")));
+    ctx.prm->enter_subsection("Data");
+    const bool data_file_given = !ctx.prm->get("File").empty();
+    ctx.prm->leave_subsection();
+    if (!data_file_given)
+      ctx.summary["reduce"]["notes"].push_back("extract and fit use the records' R(delta_root) "
+                                               "(rdelta_test.csv): Data/File names no file");
   }
 }
 

@@ -4,8 +4,10 @@
 // an independent task: under mpirun they are spread over the ranks (task_distributor.h) and the
 // tables are the same as on one rank.
 #include "fiberbridge/app/items.h"
+#include "fiberbridge/app/models.h"
 #include "fiberbridge/app/result_codec.h"
 #include "fiberbridge/app/resume_store.h"
+#include "fiberbridge/app/scene.h"
 #include "fiberbridge/app/section.h"
 #include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/core/csv.h"
@@ -28,69 +30,19 @@ namespace fiberbridge::app {
 namespace {
 
 std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  std::string item;
-  while (std::getline(in, item, sep)) {
-    const auto b = item.find_first_not_of(" \t");
-    if (b != std::string::npos)
-      out.push_back(item.substr(b, item.find_last_not_of(" \t") - b + 1));
-  }
-  return out;
+  return split_list(s, sep);
 }
 
-/// An override "Section/Key=value" applied to the shared ParameterHandler and undone afterwards.
-class ScopedOverrides {
-public:
-  ScopedOverrides(dealii::ParameterHandler& prm, const std::vector<std::string>& sets,
-                  const std::string& context)
-      : prm_(prm) {
-    for (const auto& s : sets) {
-      const auto eq = s.find('=');
-      if (eq == std::string::npos)
-        throw InputError(context + ": '" + s + "' is not Section/Key=value");
-      auto path = split(s.substr(0, eq), '/');
-      const std::string value = s.substr(eq + 1);
-      const auto b = value.find_first_not_of(" \t");
-      const std::string v = b == std::string::npos ? "" : value.substr(b);
-      if (path.empty())
-        throw InputError(context + ": '" + s + "' names no key");
-      const std::string key = path.back();
-      path.pop_back();
-      for (const auto& p : path)
-        prm_.enter_subsection(p);
-      std::string old;
-      try {
-        old = prm_.get(key);
-        prm_.set(key, v);
-      } catch (const std::exception&) {
-        for (std::size_t i = 0; i < path.size(); ++i)
-          prm_.leave_subsection();
-        throw InputError(context + ": '" + s + "': unknown key or value not allowed");
-      }
-      for (std::size_t i = 0; i < path.size(); ++i)
-        prm_.leave_subsection();
-      undo_.push_back({path, key, old});
-    }
-  }
-  ~ScopedOverrides() {
-    for (auto it = undo_.rbegin(); it != undo_.rend(); ++it) {
-      for (const auto& p : it->path)
-        prm_.enter_subsection(p);
-      prm_.set(it->key, it->old);
-      for (std::size_t i = 0; i < it->path.size(); ++i)
-        prm_.leave_subsection();
-    }
-  }
-
-private:
-  struct Undo {
-    std::vector<std::string> path;
-    std::string key, old;
-  };
-  dealii::ParameterHandler& prm_;
-  std::vector<Undo> undo_;
-};
+/// The scene's parameters with a run's settings "Section/Key=value" applied to a copy: the
+/// scene's own parameters stay as they are (the later items and the other runs read them).
+std::shared_ptr<dealii::ParameterHandler> with_settings(const SceneContext& ctx,
+                                                        const std::vector<std::string>& sets,
+                                                        const std::string& where) {
+  auto prm = copy_scene_parameters(ctx);
+  for (const auto& s : sets)
+    apply_setting(*prm, s, where);
+  return prm;
+}
 
 const SceneItem* find_item(const std::string& name) {
   for (const auto& i : scene_items())
@@ -99,31 +51,25 @@ const SceneItem* find_item(const std::string& name) {
   return nullptr;
 }
 
+/// The model's section (models.h); the model is known (require_model).
 std::string section_of(const std::string& model) {
-  if (model == "fem")
-    return "FEM";
-  if (model == "mpm")
-    return "MPM";
-  return "Beam";
+  return find_model(model)->section;
 }
 
-/// Runs one simulation item in its own output folder with the scene's law and overrides.
-result::SimulationResult run_model(SceneContext& parent, const std::string& model,
-                                   const std::string& dir, bool use_fitted_law) {
+/// A simulation item by name, or InputError.
+const SceneItem& simulation_item(const std::string& model) {
   const SceneItem* item = find_item(model);
   if (!item)
     throw InputError("Study: model '" + model + "' is not available in this build");
-  SceneContext sub;
-  sub.prm = parent.prm;
-  sub.scene_file = parent.scene_file;
-  sub.output_dir = dir;
-  sub.resume = parent.resume;
-  if (use_fitted_law) {
-    sub.fitted_law = parent.fitted_law;
-    sub.fitted_j_tip = parent.fitted_j_tip;
-  }
-  std::filesystem::create_directories(dir);
-  item->run(sub);
+  return *item;
+}
+
+/// Runs one simulation item in `sub` (a context derived from the scene's, with its own output
+/// folder and parameters) and returns its result.
+result::SimulationResult run_model(SceneContext& sub, const std::string& model) {
+  const SceneItem& item = simulation_item(model);
+  std::filesystem::create_directories(sub.output_dir);
+  item.run(sub);
   return sub.results.at(model);
 }
 
@@ -131,7 +77,8 @@ struct Case {
   std::string name;
   std::string description;
   std::vector<std::string> sets;
-  std::string only_model = {}; ///< non-empty: the case concerns this model only
+  /// Non-empty: the case concerns only the model of this section (it sets that section's keys).
+  std::string only_section = {};
 };
 
 /// docs/design.md section 3 "Stability on stiff and extreme cases".
@@ -171,7 +118,7 @@ std::vector<Case> stability_cases() {
        "PVA law loaded to initiation within one arm period (dynamic error)",
        {"Cohesive law/Type=trilinear", "Cohesive law/Points=0.1:661, 1.0:187",
         "Cohesive law/Delta c=6", "MPM/Loading periods=1"},
-       "mpm"},
+       "MPM"},
   };
 }
 
@@ -223,9 +170,13 @@ result::SimulationResult run_ladder_level(SceneContext& ctx, const Ladder& ladde
     sets.push_back(section_of(ladder.model) + "/" + k + "=" + v[l]);
   std::cerr << "study: " << ladder.model << " level " << l << " (" << level_setting(ladder, l)
             << ")\n";
-  ScopedOverrides o(*ctx.prm, sets, "Study/" + section_of(ladder.model) + " ladder");
-  return run_model(ctx, ladder.model,
-                   ctx.out("study/" + ladder.model + "_level" + std::to_string(l)), true);
+  // The level is the scene's own run with finer or coarser settings: everything earlier items
+  // handed on (the fitted or identified law, identify's specimen and modulus) stays.
+  SceneContext sub =
+      ctx.derived(ctx.out("study/" + ladder.model + "_level" + std::to_string(l)),
+                  SceneContext::HandOn::everything,
+                  with_settings(ctx, sets, "Study/" + section_of(ladder.model) + " ladder"));
+  return run_model(sub, ladder.model);
 }
 
 /// One stability case with one model: outcome, diagnosis and wall time (the model's failures are
@@ -236,12 +187,13 @@ Json run_stability_case(SceneContext& ctx, const Case& c, const std::string& mod
   std::string outcome, diagnosis;
   const auto t0 = std::chrono::steady_clock::now();
   try {
-    ScopedOverrides o(*ctx.prm, c.sets, "Study stability case " + c.name);
-    const auto r = run_model(ctx, model, ctx.out("study/stability_" + c.name + "_" + model), false);
-    SceneContext probe;
-    probe.prm = ctx.prm;
-    probe.scene_file = ctx.scene_file;
-    const double G_law = probe.j_tip() + probe.law()->area();
+    // A case is its own law, specimen and material (the sections with the case's overrides),
+    // whatever earlier items of the scene found.
+    SceneContext sub = ctx.derived(ctx.out("study/stability_" + c.name + "_" + model),
+                                   SceneContext::HandOn::sections,
+                                   with_settings(ctx, c.sets, "Study stability case " + c.name));
+    const auto r = run_model(sub, model);
+    const double G_law = sub.j_tip() + sub.law()->area();
     bool finite = !r.rcurve.empty();
     for (const auto& p : r.rcurve)
       finite = finite && std::isfinite(p.a) && std::isfinite(p.load);
@@ -278,8 +230,8 @@ namespace {
 
 /// A model named in the Study section: one of the simulation items built in.
 void require_model(const std::string& model, const std::string& key) {
-  if (model != "beam" && model != "fem" && model != "mpm")
-    throw InputError("Study/" + key + ": unknown model '" + model + "', expected beam, fem, mpm");
+  if (!find_model(model))
+    throw InputError("Study/" + key + ": unknown model '" + model + "', expected " + model_names());
   if (!find_item(model))
     throw InputError("Study/" + key + ": model '" + model + "' is not available in this build");
 }
@@ -289,19 +241,15 @@ struct StudySection {
   std::vector<Ladder> ladders;
   std::vector<std::string> stability_models;
   std::vector<Case> cases;
-  double plateau_tol = 0, target_error = 0, mpm_target = 0;
+  double plateau_tol = 0;
+  std::map<std::string, double> target; ///< per model: its target error (models.h target_key)
 
   static void declare_parameters(dealii::ParameterHandler& prm) {
     prm.declare_entry("Ladder models", "", dealii::Patterns::Anything(),
                       "Models (beam, fem, mpm) whose refinement ladders run: error vs wall time.");
-    prm.declare_entry("Beam ladder", "Number of elements = 50, 100, 200, 400",
-                      dealii::Patterns::Anything(),
-                      "'Key = v1, v2, ...' (keys of the Beam section; several keys separated by "
-                      "';' vary together).");
-    prm.declare_entry("FEM ladder", "", dealii::Patterns::Anything(),
-                      "As Beam ladder, keys of the FEM section.");
-    prm.declare_entry("MPM ladder", "", dealii::Patterns::Anything(),
-                      "As Beam ladder, keys of the MPM section.");
+    for (const auto& m : simulation_models())
+      prm.declare_entry(std::string(m.section) + " ladder", m.ladder_default,
+                        dealii::Patterns::Anything(), m.ladder_doc);
     prm.declare_entry("Stability models", "", dealii::Patterns::Anything(),
                       "Models that run the stability matrix (empty = none).");
     prm.declare_entry("Stability cases", "all", dealii::Patterns::Anything(),
@@ -319,19 +267,16 @@ struct StudySection {
   }
   void parse_parameters(dealii::ParameterHandler& prm) {
     const auto ladder_models = split(prm.get("Ladder models"), ',');
-    std::map<std::string, std::string> ladder_text{{"beam", prm.get("Beam ladder")},
-                                                   {"fem", prm.get("FEM ladder")},
-                                                   {"mpm", prm.get("MPM ladder")}};
     stability_models = split(prm.get("Stability models"), ',');
     const std::string case_list = prm.get("Stability cases");
     plateau_tol = prm.get_double("Plateau tolerance");
-    target_error = prm.get_double("Target error");
-    mpm_target = prm.get_double("MPM target error");
+    for (const auto& m : simulation_models())
+      target[m.name] = prm.get_double(m.target_key);
     if (ladder_models.empty() && stability_models.empty())
       throw InputError("Study: neither 'Ladder models' nor 'Stability models' names a model");
     for (const auto& model : ladder_models) {
       require_model(model, "Ladder models");
-      ladders.push_back(parse_ladder(model, ladder_text[model]));
+      ladders.push_back(parse_ladder(model, prm.get(section_of(model) + " ladder")));
     }
     for (const auto& model : stability_models)
       require_model(model, "Stability models");
@@ -367,8 +312,10 @@ void check_study_item(SceneContext& ctx) {
       std::vector<std::string> sets;
       for (const auto& [k, v] : ladder.keys)
         sets.push_back(section_of(ladder.model) + "/" + k + "=" + v[l]);
-      ScopedOverrides o(*ctx.prm, sets, "Study/" + section_of(ladder.model) + " ladder");
-      find_item(ladder.model)->check(ctx);
+      SceneContext level =
+          ctx.derived(ctx.output_dir, SceneContext::HandOn::everything,
+                      with_settings(ctx, sets, "Study/" + section_of(ladder.model) + " ladder"));
+      find_item(ladder.model)->check(level);
     }
   ctx.law_known_before_run();
 }
@@ -379,8 +326,6 @@ void run_study_item(SceneContext& ctx) {
   const auto& stability_models = plan.stability_models;
   const auto& cases = plan.cases;
   const double plateau_tol = plan.plateau_tol;
-  const double target_error = plan.target_error;
-  const double mpm_target = plan.mpm_target;
 
   // ---- every run of the study is one task (task_distributor.h): ladder levels, then the
   // stability cases. Each task writes its own study/<run> folder; the tables come from the
@@ -408,7 +353,7 @@ void run_study_item(SceneContext& ctx) {
   std::vector<std::pair<const Case*, std::string>> case_runs;
   for (const auto& c : cases)
     for (const auto& model : stability_models)
-      if (c.only_model.empty() || c.only_model == model)
+      if (c.only_section.empty() || c.only_section == section_of(model))
         case_runs.push_back({&c, model});
   for (const auto& [c, model] : case_runs) {
     tasks.push_back([&ctx, c = c, model = model, plateau_tol, &inputs] {
@@ -442,6 +387,9 @@ void run_study_item(SceneContext& ctx) {
             "set key top right\nplot ";
     bool first_plot = true;
     const double G_law = ctx.j_tip() + ctx.law()->area();
+    // The ladders run the scene's law and specimen set-up: say where they came from.
+    block["law_source"] = law_source_name(ctx.crack_law().source);
+    block["specimen_source"] = specimen_source_name(ctx.specimen_setup().source);
     std::size_t task = 0;
     for (const auto& ladder : ladders) {
       const auto& model = ladder.model;
@@ -480,7 +428,7 @@ void run_study_item(SceneContext& ctx) {
       const auto order = [&](double e0, double e1, double f) {
         return e0 > 0 && e1 > 0 && f > 1 ? std::log(e0 / e1) / std::log(f) : result::not_available;
       };
-      const double target = model == "mpm" ? mpm_target : target_error;
+      const double target = plan.target.at(model);
       int cheapest = -1;
       for (std::size_t l = 0; l < run_levels.size(); ++l) {
         const auto& L = run_levels[l];

@@ -155,12 +155,28 @@ std::string existing_scene_file(const std::string& file, const std::string& key,
   return path;
 }
 
-/// The Data section, its file resolved. `file_may_come_later`: reduce runs first and may name the
-/// file itself.
+/// Rows a replicate needs for the slope fits (the reader's own minimum, rdelta_data.cc).
+constexpr std::size_t min_rows_per_replicate = 8;
+
+/// The Data section, its file resolved. `file_may_come_later`: reduce runs first and may hand on
+/// R(delta_root) itself. With no Data/File, the data are reduce's R(delta_root) (in memory, named
+/// by the rdelta_test.csv reduce also writes).
 ExtractionOptions data_options(SceneContext& ctx, bool file_may_come_later) {
   ExtractionOptions o = parse_section<DataSection>(*ctx.prm, "Data");
   if (!o.data_file.empty())
     o.data_file = existing_scene_file(o.data_file, "Data/File", ctx);
+  else if (ctx.rdelta_root) {
+    for (const auto& r : ctx.rdelta_root->replicates)
+      if (r.delta.size() < min_rows_per_replicate)
+        throw InputError("Data/File: none given, and record '" + r.label + "' gives " +
+                         std::to_string(r.delta.size()) + " values of R(delta_root); at least " +
+                         std::to_string(min_rows_per_replicate) +
+                         " are needed to fit slopes: name a Data/File");
+    o.data = ctx.rdelta_root;
+    o.data_file = ctx.rdelta_root->source;
+  } else if (ctx.reduced)
+    throw InputError("Data/File: the scene runs 'extract' but names no data file, and reduce has "
+                     "no R(delta_root) to hand on (not every record has delta_root_mm)");
   else if (!file_may_come_later)
     throw InputError("Data/File: the scene runs 'extract' but names no data file");
   return o;
@@ -217,8 +233,8 @@ void run_fit_item(SceneContext& ctx) {
   const auto fit = run_trilinear_fit(*ctx.extraction, o, ctx.output_dir, ctx.summary);
   // The extracted law is handed to the simulations without being retyped
   // (docs/design.md section 5).
-  ctx.fitted_law = std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(fit.law));
-  ctx.fitted_j_tip = ctx.extraction->steady.j_tip;
+  ctx.handed_law = CrackLaw{std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(fit.law)),
+                            ctx.extraction->steady.j_tip, LawSource::fit};
   plot_extraction(*ctx.extraction, &fit, ctx.output_dir, ctx.summary);
 }
 
@@ -242,8 +258,11 @@ void run_bridging_item(SceneContext& ctx) {
   double sigma = in.stress;
   std::string stress_source = "Bridging/Stress";
   if (sigma == 0) {
-    sigma = ctx.law()->envelope(delta);
-    stress_source = ctx.fitted_law ? "fitted trilinear law" : "Cohesive law section";
+    const CrackLaw& crack = ctx.crack_law();
+    sigma = crack.law->envelope(delta);
+    stress_source = crack.source == LawSource::fit        ? "fitted trilinear law"
+                    : crack.source == LawSource::identify ? "identified trilinear law"
+                                                          : "Cohesive law section";
     if (!(sigma > 0))
       throw InputError("Bridging: the scene's law carries no traction at the opening " +
                        std::to_string(delta / mm) + " mm; set Bridging/Stress");

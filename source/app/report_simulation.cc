@@ -7,15 +7,16 @@
 namespace fiberbridge::app {
 
 void report_simulation(SceneContext& ctx, result::SimulationResult r, const std::string& size_key) {
-  const auto law = ctx.law();
-  const double j_tip = ctx.j_tip();
+  const CrackLaw& crack_law = ctx.crack_law();
+  const auto law = crack_law.law;
+  const double j_tip = crack_law.j_tip;
   // r.rdelta_rel_error_vs_eq2 is the model's own (result::finish_rcurve, or the beam's same
   // call), against this law and J_tip.
   const std::string csv = "rcurve_" + r.model + ".csv";
   result::write_rcurve_csv(ctx.out(csv), r);
   const double G_ss_law = j_tip + law->area();
   Json block = {{"law", law->name()},
-                {"law_source", ctx.fitted_law ? "fit" : "Cohesive law section"},
+                {"law_source", law_source_name(crack_law.source)},
                 {"J_tip_J_m2", j_tip},
                 {"G_ss_J_m2", json_number(r.G_ss)},
                 {"G_ss_law_J_m2", G_ss_law},

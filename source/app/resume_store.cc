@@ -1,5 +1,6 @@
 #include "fiberbridge/app/resume_store.h"
 
+#include "fiberbridge/app/models.h"
 #include "fiberbridge/app/result_codec.h"
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/core/binary_archive.h"
@@ -202,7 +203,7 @@ std::string run_or_restore(const std::string& output_dir, bool resume, const std
 }
 
 bool is_simulation_item(const std::string& item) {
-  return item == "beam" || item == "fem" || item == "mpm";
+  return built_model(item) != nullptr;
 }
 
 void run_or_restore_simulation_item(SceneContext& ctx, const SceneItem& item) {

@@ -2,7 +2,9 @@
 
 #include "fiberbridge/app/analysis_steps.h"
 #include "fiberbridge/app/items.h"
+#include "fiberbridge/app/models.h"
 #include "fiberbridge/app/resume_store.h"
+#include "fiberbridge/app/scene_context.h"
 #include "fiberbridge/app/simulation_tasks.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
@@ -20,42 +22,42 @@
 namespace fiberbridge::app {
 
 const std::vector<SceneItem>& scene_items() {
-  // Order = execution order: analysis first (fit hands its law on), then simulations, then the
-  // items that compare them.
-  static const std::vector<SceneItem> items = {
-      {"reduce", &declare_test_section, &check_reduce_item, &run_reduce_item},
+  // Order = execution order: analysis first (fit hands its law on), then the simulations
+  // (models.h, cheapest first), then the items that compare them.
+  static const std::vector<SceneItem> items = [] {
+    std::vector<SceneItem> v = {
+        {"reduce", &declare_test_section, &check_reduce_item, &run_reduce_item},
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
-      {"identify", &declare_identify_section, &check_identify_item, &run_identify_item},
+        {"identify", &declare_identify_section, &check_identify_item, &run_identify_item},
 #endif
-      {"extract", &declare_data_section, &check_extract_item, &run_extract_item},
-      {"fit", &declare_fit_section, &check_fit_item, &run_fit_item},
-      {"rank", &declare_rank_section, &check_rank_item, &run_rank_item},
-      {"bridging", &declare_bridging_section, &check_bridging_item, &run_bridging_item},
-#ifdef FIBERBRIDGE_HAVE_BEAM
-      {"beam", &declare_beam_section, &check_beam_item, &run_beam_item},
-#endif
-#ifdef FIBERBRIDGE_HAVE_FEM
-      {"fem", &declare_fem_section, &check_fem_item, &run_fem_item},
-#endif
-#ifdef FIBERBRIDGE_HAVE_MPM
-      {"mpm", &declare_mpm_section, &check_mpm_item, &run_mpm_item},
-#endif
-      {"compare", &declare_compare_section, &check_compare_item, &run_compare_item},
-      {"study", &declare_study_section, &check_study_item, &run_study_item},
-  };
+        {"extract", &declare_data_section, &check_extract_item, &run_extract_item},
+        {"fit", &declare_fit_section, &check_fit_item, &run_fit_item},
+        {"rank", &declare_rank_section, &check_rank_item, &run_rank_item},
+        {"bridging", &declare_bridging_section, &check_bridging_item, &run_bridging_item},
+    };
+    for (const SimulationModel* m : built_models())
+      v.push_back(m->item());
+    v.insert(v.end(),
+             {
+                 {"compare", &declare_compare_section, &check_compare_item, &run_compare_item},
+                 {"study", &declare_study_section, &check_study_item, &run_study_item},
+             });
+    return v;
+  }();
   return items;
 }
 
 namespace {
 
-const char* all_item_names =
-    "reduce, identify, extract, fit, rank, bridging, fem, mpm, beam, compare, study";
+/// Every item a scene may list, built or not.
+const std::string all_item_names =
+    "reduce, identify, extract, fit, rank, bridging, " + model_names() + ", compare, study";
 
 void declare_everything(dealii::ParameterHandler& prm) {
   prm.declare_entry("Output directory", "output", dealii::Patterns::Anything(),
                     "Where results go (created if missing).");
   prm.declare_entry("Run", "", dealii::Patterns::Anything(),
-                    std::string("Comma-separated items to run, from: ") + all_item_names +
+                    "Comma-separated items to run, from: " + all_item_names +
                         ". Only these are built and run.");
   declare_law_section(prm);
   declare_specimen_sections(prm);
@@ -64,11 +66,13 @@ void declare_everything(dealii::ParameterHandler& prm) {
       item.declare(prm);
 }
 
-std::vector<std::string> split_list(const std::string& s) {
+} // namespace
+
+std::vector<std::string> split_list(const std::string& s, char separator) {
   std::vector<std::string> out;
   std::stringstream in(s);
   std::string item;
-  while (std::getline(in, item, ',')) {
+  while (std::getline(in, item, separator)) {
     const auto b = item.find_first_not_of(" \t");
     if (b == std::string::npos)
       continue;
@@ -77,20 +81,20 @@ std::vector<std::string> split_list(const std::string& s) {
   return out;
 }
 
-/// --set "Section/Sub/Key=value": enter the sections, set() validates against the pattern.
-void apply_override(dealii::ParameterHandler& prm, const std::string& o) {
-  const auto eq = o.find('=');
+void apply_setting(dealii::ParameterHandler& prm, const std::string& setting,
+                   const std::string& where) {
+  const auto eq = setting.find('=');
   if (eq == std::string::npos)
-    throw InputError("--set '" + o + "': expected \"Section/Key=value\"");
-  std::string path = o.substr(0, eq);
-  const std::string value = o.substr(eq + 1);
-  std::vector<std::string> parts;
-  std::stringstream in(path);
-  std::string p;
-  while (std::getline(in, p, '/'))
-    parts.push_back(p);
-  if (parts.empty() || parts.back().empty())
-    throw InputError("--set '" + o + "': no key before '='");
+    throw InputError(where + " '" + setting + "': expected \"Section/Key=value\"");
+  // Blanks around the names and the value are the user's layout, not part of them.
+  const std::string path = setting.substr(0, eq);
+  const auto parts = split_list(path, '/');
+  const auto last = path.find_last_not_of(" \t");
+  if (parts.empty() || path[last] == '/')
+    throw InputError(where + " '" + setting + "': no key before '='");
+  std::string value = setting.substr(eq + 1);
+  value.erase(0, value.find_first_not_of(" \t"));
+  value.erase(value.find_last_not_of(" \t") + 1);
   for (std::size_t i = 0; i + 1 < parts.size(); ++i)
     prm.enter_subsection(parts[i]);
   try {
@@ -98,11 +102,23 @@ void apply_override(dealii::ParameterHandler& prm, const std::string& o) {
   } catch (const std::exception& e) {
     for (std::size_t i = 0; i + 1 < parts.size(); ++i)
       prm.leave_subsection();
-    throw InputError("--set '" + o + "': unknown key or value not allowed for it");
+    throw InputError(where + " '" + setting + "': unknown key or value not allowed for it");
   }
   for (std::size_t i = 0; i + 1 < parts.size(); ++i)
     prm.leave_subsection();
 }
+
+std::shared_ptr<dealii::ParameterHandler> copy_scene_parameters(const SceneContext& ctx) {
+  // ParameterHandler cannot be copied, and its JSON and XML listings do not read back in deal.II
+  // 9.4 (mangled entry names): the copy reads the scene as the runner did, the file and then
+  // --set. Nothing writes into the scene's parameters after that (docs/design.md section 4), so
+  // the copy holds the same values.
+  auto copy = std::make_shared<dealii::ParameterHandler>();
+  read_scene(*copy, ctx.scene_file, ctx.overrides);
+  return copy;
+}
+
+namespace {
 
 /// deal.II's exception text is many lines (where in deal.II, the violated condition, then the
 /// "Additional information" that says what was wrong in the user's file); keep the last part.
@@ -163,10 +179,11 @@ std::vector<std::string> read_scene(dealii::ParameterHandler& prm, const std::st
   } catch (const std::exception& e) {
     throw InputError(prm_file + ": " + condense(e.what()));
   }
+  // --set "Section/Sub/Key=value": set() validates against the entry's pattern.
   for (const auto& o : overrides)
-    apply_override(prm, o);
+    apply_setting(prm, o, "--set");
 
-  const auto wanted = split_list(prm.get("Run"));
+  const auto wanted = split_list(prm.get("Run"), ',');
   if (wanted.empty())
     throw InputError(prm_file + ": 'Run' lists no items; choose from " +
                      std::string(all_item_names));
@@ -201,6 +218,7 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
   SceneContext ctx;
   ctx.prm = &prm;
   ctx.scene_file = prm_file;
+  ctx.overrides = overrides;
   ctx.run_items = wanted_set;
   // Every section the run will use is read and validated before anything is written: a bad value
   // in the section of the last item must not surface after the first item's minutes of work.

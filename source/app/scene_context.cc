@@ -7,42 +7,73 @@
 
 namespace fiberbridge::app {
 
+const char* law_source_name(LawSource source) {
+  switch (source) {
+  case LawSource::fit:
+    return "fit";
+  case LawSource::identify:
+    return "identify";
+  case LawSource::section:
+    break;
+  }
+  return "Cohesive law section";
+}
+
+const char* specimen_source_name(SpecimenSource source) {
+  return source == SpecimenSource::identify ? "identify" : "Specimen and Material sections";
+}
+
 const law::TractionLaw* SceneContext::law_known_before_run() {
-  if (fitted_law || run_items.count("fit") || run_items.count("identify"))
+  if (handed_law || run_items.count("fit") || run_items.count("identify"))
     return nullptr;
   return law().get();
 }
 
-law::TractionLawPtr SceneContext::law() {
-  if (fitted_law)
-    return fitted_law;
+const CrackLaw& SceneContext::crack_law() {
+  if (handed_law)
+    return *handed_law;
   if (!section_law_) {
     auto spec = parse_section<LawSection>(*prm, "Cohesive law");
     if (!spec.table_file.empty())
       spec.table_file = resolve_scene_path(spec.table_file, scene_file);
-    section_law_ = law::make_law(spec);
-    section_j_tip_ = spec.j_tip;
+    section_law_ = CrackLaw{law::make_law(spec), spec.j_tip, LawSource::section};
   }
-  return section_law_;
+  return *section_law_;
 }
 
-double SceneContext::j_tip() {
-  if (fitted_law)
-    return fitted_j_tip;
-  law();
-  return section_j_tip_;
+SpecimenSetup SceneContext::specimen_setup() const {
+  if (handed_specimen)
+    return *handed_specimen;
+  return {parse_section<SpecimenSection>(*prm, "Specimen"),
+          parse_section<MaterialSection>(*prm, "Material"), SpecimenSource::section};
 }
 
-specimen::Specimen SceneContext::specimen() const {
-  if (identified_specimen)
-    return *identified_specimen;
-  return parse_section<SpecimenSection>(*prm, "Specimen");
-}
-
-specimen::Material SceneContext::material() const {
-  if (identified_material)
-    return *identified_material;
-  return parse_section<MaterialSection>(*prm, "Material");
+SceneContext SceneContext::derived(const std::string& dir, HandOn what,
+                                   std::shared_ptr<dealii::ParameterHandler> parameters) const {
+  SceneContext sub;
+  if (parameters) {
+    sub.own_prm = std::move(parameters);
+    sub.prm = sub.own_prm.get();
+  } else {
+    sub.own_prm = own_prm;
+    sub.prm = prm;
+    sub.section_law_ = section_law_; // the same sections: the law built from them holds
+  }
+  sub.output_dir = dir;
+  sub.scene_file = scene_file;
+  sub.overrides = overrides;
+  sub.resume = resume;
+  sub.run_items = run_items;
+  if (what == HandOn::everything) {
+    sub.records = records;
+    sub.reduced = reduced;
+    sub.rdelta_root = rdelta_root;
+    sub.extraction = extraction;
+    sub.identification = identification;
+    sub.handed_law = handed_law;
+    sub.handed_specimen = handed_specimen;
+  }
+  return sub;
 }
 
 } // namespace fiberbridge::app

@@ -1,5 +1,6 @@
 #include "fiberbridge/app/simulation_tasks.h"
 
+#include "fiberbridge/app/models.h"
 #include "fiberbridge/app/result_codec.h"
 #include "fiberbridge/app/resume_store.h"
 #include "fiberbridge/app/task_distributor.h"
@@ -14,31 +15,24 @@ namespace fiberbridge::app {
 
 namespace {
 
-/// Relative cost, only to order the hand-out (the slowest model starts first): on the seed
-/// specimen the beam takes ~0.2 s, the 2D FEM a few s, the MPM minutes (README.md).
-double cost_of(const std::string& model) {
-  return model == "mpm" ? 100.0 : model == "fem" ? 10.0 : model == "beam" ? 1.0 : 0.0;
-}
-
-/// A FEM that is one big run over all ranks by request: 3D, or the distributed engine chosen.
-bool fem_needs_all_ranks(dealii::ParameterHandler& prm) {
-  prm.enter_subsection("FEM");
-  const bool all = prm.get_integer("Dimension") == 3 || prm.get("Engine") == "distributed";
-  prm.leave_subsection();
-  return all;
+/// Relative cost, only to order the hand-out (the slowest model starts first); 0 for the items
+/// that are not simulations.
+double cost_of(const std::string& item) {
+  const SimulationModel* m = built_model(item);
+  return m ? m->cost : 0.0;
 }
 
 Json run_simulations(SceneContext& ctx, const std::set<std::string>& wanted, MPI_Comm comm) {
   std::vector<const SceneItem*> sims;
   for (const auto& item : scene_items())
-    if (wanted.count(item.name) && cost_of(item.name) > 0 &&
-        !(item.name == "fem" && fem_needs_all_ranks(*ctx.prm)))
+    if (const SimulationModel* m = built_model(item.name);
+        m && wanted.count(item.name) && !(m->needs_all_ranks && m->needs_all_ranks(*ctx.prm)))
       sims.push_back(&item);
   int n_ranks = 1;
   MPI_Comm_size(comm, &n_ranks);
   Json block = {{"ranks", n_ranks}, {"items", Json::array()}};
-  if (sims.empty() || (sims.size() == 1 && sims[0]->name == "fem"))
-    return block; // one collective FEM run (or none): the items run as they are
+  if (sims.empty() || (sims.size() == 1 && built_model(sims[0]->name)->uses_all_ranks))
+    return block; // one collective run (the FEM) or none: the items run as they are
 
   std::vector<double> cost;
   std::string names;

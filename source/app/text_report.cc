@@ -1,4 +1,5 @@
 // report.txt: the key numbers of a run in a few lines a person reads first (also printed).
+#include "fiberbridge/app/models.h"
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/summary.h"
@@ -74,7 +75,8 @@ std::string text_report(const Json& s) {
       << " /mm^2 (Eq. 15, peeling), " << num(s["bridging"], "rho_b_exact_governing_per_mm2", 3)
       << " /mm^2 (exact Eq. 11, " << s["bridging"]["governing_mechanism"].get<std::string>()
       << " governs)\n";
-  for (const char* model : {"beam", "fem", "mpm"}) {
+  for (const SimulationModel* sim : built_models()) {
+    const std::string model = sim->name;
     if (!s.contains(model))
       continue;
     const auto& m = s[model];

@@ -522,3 +522,46 @@ TEST(AppReduce, DeltaRootFeedsExtractAndFit) {
   }
   EXPECT_NE(line.find("delta_root_mm,R_delta_J_m2"), std::string::npos) << line;
 }
+
+#ifdef FIBERBRIDGE_HAVE_BEAM
+namespace {
+/// The data rows of a CSV (comment lines dropped), as text.
+std::vector<std::string> data_lines(const fs::path& p) {
+  std::ifstream in(p);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line[0] != '#')
+      lines.push_back(line);
+  return lines;
+}
+} // namespace
+
+// Issue 30: a study after identify runs the identified law on the identified specimen (the
+// record's a0) and modulus (the calibrated E_L), as the scene's own beam does; the summary names
+// the law's and the specimen's source.
+TEST(AppStudy, LadderUsesTheIdentifiedSpecimenAndModulus) {
+  const auto r =
+      run("identify_study", "run " + source("tests/app/scenes/identify_study_small.prm"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path out = work("identify_study") / "out";
+  const Json s = read_json(out / "summary.json");
+  EXPECT_EQ(s.at("beam").at("law_source"), "identify");
+  EXPECT_EQ(s.at("study").at("law_source"), "identify");
+  EXPECT_EQ(s.at("study").at("specimen_source"), "identify");
+  // The handed-on specimen differs from the sections (a0 70 mm, E_L 15 GPa quoted), so a level
+  // on the sections could not reproduce the scene's beam run.
+  const Json& rec = s.at("identify").at("records").at(0);
+  const double a0_mm = rec.at("a0_mm").get<double>();
+  ASSERT_GT(std::abs(a0_mm - 70.0), 10.0);
+  ASSERT_GT(std::abs(rec.at("E_L_effective_GPa").get<double>() - 15.0), 1.0);
+  // The one level has the Beam section's own settings: the same run, row for row.
+  const auto scene_rows = data_lines(out / "rcurve_beam.csv");
+  const auto level_rows = data_lines(out / "study" / "beam_level0" / "rcurve_beam.csv");
+  ASSERT_GT(scene_rows.size(), 2u);
+  EXPECT_EQ(level_rows, scene_rows);
+  // Its R curve starts at the identified a0 (the CSV's a_mm, first data row after the header).
+  const double a_first = std::stod(level_rows.at(1).substr(0, level_rows.at(1).find(',')));
+  // 1e-6 mm: the CSV's 10 significant digits of a length of tens of mm.
+  EXPECT_NEAR(a_first, a0_mm, 1e-6);
+}
+#endif

@@ -7,12 +7,18 @@
 #include "fiberbridge/analysis/trilinear_fit.h"
 #include "fiberbridge/core/summary.h"
 
+#include <memory>
 #include <string>
 
 namespace fiberbridge::app {
 
 struct ExtractionOptions {
+  /// The R(delta) data: read from this file, or, when `data` is given, its name in the outputs
+  /// and messages (the file the data were also written to).
   std::string data_file;
+  /// R(delta) handed on in memory (a scene's `reduce`, SceneContext::rdelta_root); nullptr =
+  /// read data_file.
+  std::shared_ptr<const analysis::RDeltaData> data;
   double delta_c = 0;    ///< [m]; 0 = automatic
   double j_tip = 0;      ///< [J/m^2]; 0 = automatic
   int intervals = 100;   ///< n of Eq. 6
@@ -26,10 +32,10 @@ struct ExtractionOutcome {
   analysis::ExtractedLaws laws;
 };
 
-/// Reads, averages, finds the steady state, extracts Eq. 6 and R' laws; writes rdelta_averaged.csv,
-/// cohesive_law_eq5.csv, cohesive_law_dRdd.csv; adds the top-level keys of docs/design.md section 5
-/// to `summary` (J_tip_J_m2, G_ss_J_m2, delta_c_mm, peak_sigma_eq5_kPa, peak_sigma_dRdd_kPa,
-/// extract{}).
+/// Reads (or takes o.data), averages, finds the steady state, extracts Eq. 6 and R' laws; writes
+/// rdelta_averaged.csv, cohesive_law_eq5.csv, cohesive_law_dRdd.csv; adds the top-level keys of
+/// docs/design.md section 5 to `summary` (J_tip_J_m2, G_ss_J_m2, delta_c_mm, peak_sigma_eq5_kPa,
+/// peak_sigma_dRdd_kPa, extract{}).
 ExtractionOutcome run_extraction(const ExtractionOptions& o, const std::string& out_dir,
                                  Json& summary);
 

@@ -3,6 +3,7 @@
 // entries are errors), apply --set overrides, then run only the items listed in `Run`.
 #include <nlohmann/json.hpp>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,22 @@ std::vector<std::string> read_scene(dealii::ParameterHandler& prm, const std::st
 /// checkpoints are continued (resume_store.h); without, that state is removed first.
 std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides,
                       bool resume = false);
+
+/// One setting "Section/Sub/Key=value" applied to `prm` (the scene's --set, a study's
+/// overrides); set() validates the value against the entry's pattern. Throws InputError that
+/// starts with `where` ("--set", "Study/Beam ladder") and quotes the setting.
+void apply_setting(dealii::ParameterHandler& prm, const std::string& setting,
+                   const std::string& where);
+
+struct SceneContext;
+/// A copy of the scene's parameters (ctx.scene_file read again with ctx.overrides), for runs that
+/// apply their own overrides without touching the scene's (a study's ladder levels and stability
+/// cases).
+std::shared_ptr<dealii::ParameterHandler> copy_scene_parameters(const SceneContext& ctx);
+
+/// The items of a list as a scene writes them ("beam, fem"; "Key = 1, 2"), blanks around each
+/// item removed, empty items dropped.
+std::vector<std::string> split_list(const std::string& s, char separator);
 
 /// Writes the full documented parameter set (every section, defaults) to `out`.
 void print_scene_parameters(std::ostream& out);

@@ -1,7 +1,12 @@
 #pragma once
-// What a scene item (extract, fit, rank, bridging, fem, mpm, beam, compare, study) sees of the
-// scene: the parsed parameters, the output directory, the summary it adds its block to, and what
-// earlier items handed on (the fitted law, simulation results for compare).
+// What a scene item (reduce, identify, extract, fit, rank, bridging, the simulations, compare,
+// study) sees of the scene: the parsed parameters, the output directory, the summary it adds its
+// block to, and what earlier items handed on as typed values (docs/design.md section 4, "A
+// scene's state"): the records and their reduction, R(delta_root), the extraction, the
+// identification, the crack law and the specimen set-up with their sources, the simulation
+// results.
+#include "fiberbridge/analysis/rdelta_data.h"
+#include "fiberbridge/analysis/test_record.h"
 #include "fiberbridge/core/summary.h"
 #include "fiberbridge/law/law_spec.h"
 #include "fiberbridge/law/traction_law.h"
@@ -15,62 +20,115 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace fiberbridge::app {
 
 struct ExtractionOutcome; // analysis_steps.h
-}
+struct ReduceOutcome;     // reduce_step.h
+} // namespace fiberbridge::app
 namespace fiberbridge::identify {
 struct Identification; // identify/identify.h
 }
 namespace fiberbridge::app {
 
+/// Where the law a simulation uses comes from.
+enum class LawSource { section, fit, identify };
+/// The name summary.json gives a law source ("Cohesive law section", "fit", "identify").
+const char* law_source_name(LawSource source);
+
+/// A crack law with its crack-tip toughness and its source.
+struct CrackLaw {
+  law::TractionLawPtr law;
+  double j_tip = 0; ///< [J/m^2]
+  LawSource source = LawSource::section;
+};
+
+/// Where the specimen and material a simulation uses come from.
+enum class SpecimenSource { section, identify };
+/// "Specimen and Material sections" or "identify".
+const char* specimen_source_name(SpecimenSource source);
+
+/// The specimen and its material with their source.
+struct SpecimenSetup {
+  specimen::Specimen specimen;
+  specimen::Material material;
+  SpecimenSource source = SpecimenSource::section;
+};
+
 struct SceneContext {
   dealii::ParameterHandler* prm = nullptr; ///< every section declared, the scene parsed
+  /// Owns *prm when this context reads a copy of the scene's parameters (a study's run with its
+  /// overrides, derived()); empty when prm belongs to the scene runner.
+  std::shared_ptr<dealii::ParameterHandler> own_prm;
   std::string output_dir;
   Json summary = Json::object();
-
-  /// The law for simulations: from `fit` when the scene runs it (extracted law applied without
-  /// retyping), else from the `Cohesive law` section. Built on first use (law()).
-  law::TractionLawPtr fitted_law;
-  double fitted_j_tip = 0;
-
-  /// What `extract` found (data curve, steady state, laws), for `fit` and `bridging`.
-  std::shared_ptr<const ExtractionOutcome> extraction;
   std::string scene_file; ///< for resolving relative data paths
+  /// The run's --set settings, in order: with scene_file, what a copy of the parameters reads
+  /// (copy_scene_parameters, scene.h).
+  std::vector<std::string> overrides;
   /// `fiberbridge run --resume`: units of work finished by an earlier run into this output
   /// directory are restored and checkpoints continued (resume_store.h, mpm/checkpoint.h).
   bool resume = false;
 
-  /// What `identify` found; it also sets fitted_law/fitted_j_tip and the effective specimen
-  /// (first record's a0) and material (its calibrated E_L) that specimen()/material() return.
-  std::shared_ptr<const identify::Identification> identification;
-  std::optional<specimen::Specimen> identified_specimen;
-  std::optional<specimen::Material> identified_material;
+  // ---- what earlier items hand on (typed; nothing is written back into the parameters)
 
-  /// Results of the simulations that ran, by model name ("fem", "mpm", "beam"), for compare.
+  /// The Test section's records as read, once: by `reduce` (which keeps them in its outcome) or,
+  /// when reduce does not run, by `identify`'s check. identify fits these.
+  std::shared_ptr<const std::vector<analysis::TestRecord>> records;
+  /// What `reduce` found (records, R(a) per record and their mean).
+  std::shared_ptr<const ReduceOutcome> reduced;
+  /// R(delta_root) of reduce's records when every record measured delta_root: extract and fit
+  /// use it unless Data/File names a file (reduce also writes it to rdelta_test.csv).
+  std::shared_ptr<const analysis::RDeltaData> rdelta_root;
+  /// What `extract` found (data curve, steady state, laws), for `fit` and `bridging`.
+  std::shared_ptr<const ExtractionOutcome> extraction;
+  /// What `identify` found; it also hands on its law (handed_law) and the effective specimen
+  /// (first record's a0 and calibrated E_L, handed_specimen).
+  std::shared_ptr<const identify::Identification> identification;
+  /// The law for simulations when `fit` or `identify` ran (the extracted or identified law
+  /// applied without retyping); else crack_law() is the Cohesive law section's.
+  std::optional<CrackLaw> handed_law;
+  /// The specimen set-up when `identify` ran; else the Specimen and Material sections.
+  std::optional<SpecimenSetup> handed_specimen;
+  /// Results of the simulations that ran, by model name (models.h), for compare.
   std::map<std::string, result::SimulationResult> results;
 
   /// The items the scene runs: the checks before the first item (check_scene) decide from it
   /// which sections will be used (the law section only when neither fit nor identify runs).
   std::set<std::string> run_items;
   /// True when the simulations get the Specimen and Material sections (no identify in the run).
-  bool specimen_from_section() const { return !run_items.count("identify"); }
+  bool specimen_from_section() const { return !run_items.count("identify") && !handed_specimen; }
   /// The law when it is known before any item runs (the Cohesive law section, built and checked),
   /// nullptr when fit or identify will provide it.
   const law::TractionLaw* law_known_before_run();
 
-  /// The law and J_tip a simulation uses (fit's output, else the Cohesive law section).
-  law::TractionLawPtr law();
-  double j_tip();
-  specimen::Specimen specimen() const; ///< the Specimen section (defaults: the seed's DCB)
-  specimen::Material material() const; ///< the Material section (defaults: Douglas-fir)
+  /// The law, J_tip and source a simulation uses: handed_law, else the Cohesive law section
+  /// (built and checked on first use).
+  const CrackLaw& crack_law();
+  law::TractionLawPtr law() { return crack_law().law; }
+  double j_tip() { return crack_law().j_tip; }
+  /// The specimen and material a simulation uses: handed_specimen, else the Specimen and
+  /// Material sections (defaults: the seed's DCB of Douglas-fir).
+  SpecimenSetup specimen_setup() const;
+  specimen::Specimen specimen() const { return specimen_setup().specimen; }
+  specimen::Material material() const { return specimen_setup().material; }
   /// Path inside the output directory.
   std::string out(const std::string& file) const { return output_dir + "/" + file; }
 
+  /// What a context for a run inside this one gets (a study's ladder level or stability case).
+  enum class HandOn {
+    everything, ///< the typed state above: law, specimen set-up, records, outcomes
+    sections    ///< none of it: law, specimen and material from the (overridden) sections
+  };
+  /// A context for a run inside this one: the same scene file, resume flag and run items, its own
+  /// output directory, an empty summary and no results. `parameters`: the handler the run reads
+  /// (a copy with overrides, copy_scene_parameters in scene.h); nullptr = this context's.
+  SceneContext derived(const std::string& dir, HandOn what,
+                       std::shared_ptr<dealii::ParameterHandler> parameters = nullptr) const;
+
 private:
-  law::TractionLawPtr section_law_;
-  double section_j_tip_ = 0;
+  std::optional<CrackLaw> section_law_; ///< the Cohesive law section, built on first use
 };
 
 /// One scene item: declares its prm section(s), checks them and runs. Simulation items return

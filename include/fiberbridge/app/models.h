@@ -1,0 +1,55 @@
+#pragma once
+// The simulation models of a scene (docs/design.md section 4, "One registry of models"): each
+// declared once, with its name, section, declare/check/run, cost estimate and study keys, in the
+// registry (models.cc), as ASPECT registers its plugins. The scene runner, resume, the task
+// hand-out, the text report, compare and study ask the registry; no other code names a model.
+// A fourth model: its library and item file, and one entry in models.cc.
+#include "fiberbridge/app/scene_context.h"
+
+#include <string>
+#include <vector>
+
+namespace fiberbridge::app {
+
+struct SimulationModel {
+  const char* name;    ///< the Run item, the key of ctx.results and of its summary block
+  const char* section; ///< its prm section; the Study's "<section> ladder" varies its keys
+  bool built;          ///< compiled into this build (FIBERBRIDGE_MODELS); else only named
+  void (*declare)(dealii::ParameterHandler&); ///< nullptr when not built
+  void (*check)(SceneContext&);
+  void (*run)(SceneContext&);
+  /// Relative cost on the seed specimen (the beam ~0.2 s, the 2D FEM a few s, the MPM minutes,
+  /// README.md): orders the runs (cheapest first in a scene) and the hand-out across ranks
+  /// (costliest first, simulation_tasks.h).
+  double cost;
+  /// Runs on all ranks of simulation_communicator() when it is the only simulation of a scene
+  /// (an MPI program: the FEM); the others are serial programs, one task each.
+  bool uses_all_ranks;
+  /// Whether this scene's run of the model must have every rank even beside other models (the
+  /// FEM in 3D or on the distributed engine by request); nullptr = never.
+  bool (*needs_all_ranks)(dealii::ParameterHandler&);
+  const char* ladder_default; ///< Study/<section> ladder: its default and its documentation
+  const char* ladder_doc;
+  /// The Study key of the error a ladder level must reach ("Target error").
+  const char* target_key;
+
+  SceneItem item() const { return {name, declare, check, run}; }
+};
+
+/// Every model the project knows, built or not, in the order they joined the project (the order
+/// the Run documentation lists them).
+const std::vector<SimulationModel>& simulation_models();
+
+/// The built models, cheapest first: the order a scene runs them.
+std::vector<const SimulationModel*> built_models();
+
+/// The model named `name` (built or not), nullptr when there is none.
+const SimulationModel* find_model(const std::string& name);
+
+/// The built model named `name`, nullptr when there is none (or it is not built).
+const SimulationModel* built_model(const std::string& name);
+
+/// "fem, mpm, beam": the known models' names, comma-separated.
+std::string model_names();
+
+} // namespace fiberbridge::app
