@@ -3,6 +3,7 @@
 #include "fiberbridge/app/scene_context.h"
 #include "fiberbridge/app/section.h"
 #include "fiberbridge/beam/dcb_beam.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/renamed_key.h"
 #include "fiberbridge/core/units.h"
 
@@ -10,7 +11,6 @@
 #include <deal.II/base/patterns.h>
 
 #include <iostream>
-#include <sstream>
 
 namespace fiberbridge::app {
 
@@ -19,11 +19,10 @@ using dealii::Patterns::Integer;
 using units::mm;
 
 namespace {
-/// Shortest decimal form of a default ("0.5", "1e-10"), as a user would type it.
+/// Shortest decimal form of a default ("0.5", "1e-10"), as a user would type it: the stream's
+/// default six significant digits.
 std::string default_text(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
+  return fmt(v, 6);
 }
 } // namespace
 

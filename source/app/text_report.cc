@@ -2,9 +2,9 @@
 #include "fiberbridge/app/models.h"
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/core/csv.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/summary.h"
 
-#include <cstdio>
 #include <sstream>
 
 namespace fiberbridge::app {
@@ -14,9 +14,7 @@ namespace {
 std::string num(const Json& j, const char* key, int precision = 4) {
   if (!j.contains(key) || !j[key].is_number())
     return "n/a";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", precision, j[key].get<double>());
-  return buf;
+  return fmt(j[key].get<double>(), precision); // %g: the stream's default notation
 }
 
 /// Per record: plateau by each method, MBT |Delta| and what the reader cleaned.
