@@ -29,10 +29,6 @@ namespace fiberbridge::app {
 
 namespace {
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  return split_list(s, sep);
-}
-
 /// The scene's parameters with a run's settings "Section/Key=value" applied to a copy: the
 /// scene's own parameters stay as they are (the later items and the other runs read them).
 std::shared_ptr<dealii::ParameterHandler> with_settings(const SceneContext& ctx,
@@ -134,7 +130,7 @@ struct Ladder {
 };
 
 Ladder parse_ladder(const std::string& model, const std::string& text) {
-  const auto spec = split(text, ';');
+  const auto spec = split_list(text, ';');
   if (spec.empty())
     throw InputError("Study/" + section_of(model) + " ladder: empty for model '" + model +
                      "' listed in Ladder models");
@@ -146,7 +142,7 @@ Ladder parse_ladder(const std::string& model, const std::string& text) {
                        "' is not 'Key = v1, v2, ...'");
     auto key = s.substr(0, eq);
     key = key.substr(0, key.find_last_not_of(" \t") + 1);
-    const auto values = split(s.substr(eq + 1), ',');
+    const auto values = split_list(s.substr(eq + 1), ',');
     if (ladder.levels && values.size() != ladder.levels)
       throw InputError("Study/" + section_of(model) +
                        " ladder: keys varied together need the same number of values");
@@ -266,8 +262,8 @@ struct StudySection {
                       "relative amount is reported 'suspect'.");
   }
   void parse_parameters(dealii::ParameterHandler& prm) {
-    const auto ladder_models = split(prm.get("Ladder models"), ',');
-    stability_models = split(prm.get("Stability models"), ',');
+    const auto ladder_models = split_list(prm.get("Ladder models"), ',');
+    stability_models = split_list(prm.get("Stability models"), ',');
     const std::string case_list = prm.get("Stability cases");
     plateau_tol = prm.get_double("Plateau tolerance");
     for (const auto& m : simulation_models())
@@ -282,7 +278,7 @@ struct StudySection {
       require_model(model, "Stability models");
     if (!stability_models.empty()) {
       const auto all = stability_cases();
-      const auto wanted = split(case_list, ',');
+      const auto wanted = split_list(case_list, ',');
       for (const auto& name : wanted)
         if (name != "all" &&
             std::none_of(all.begin(), all.end(), [&](const Case& c) { return c.name == name; }))
