@@ -389,8 +389,12 @@ private:
         continue;
       }
       if (load) {
-        const bool rises_again = std::any_of(v.begin() + static_cast<std::ptrdiff_t>(j), v.end(),
-                                             [&](double x) { return x > 0.25 * largest; });
+        // After a fracture the load stays low (bridging decays); after a tare it rises again
+        // from zero on the rising branch, or goes negative on the falling one.
+        const bool rises_again =
+            std::any_of(v.begin() + static_cast<std::ptrdiff_t>(j), v.end(), [&](double x) {
+              return x > 5 * zero_fraction * largest || x < -zero_fraction * largest;
+            });
         if (!rises_again) {
           i = j; // a fracture with some bridging load left: the final drop's business
           continue;
@@ -470,8 +474,12 @@ private:
       if (slope > 0 && std::isfinite(slope))
         x0 = (sx * slope - sy) / (m * slope); // opening at zero load: mean x - mean y / slope
     }
-    const bool shift =
-        std::isfinite(x0) && (std::abs(x0) > offset_fraction * top || lowest < -noise);
+    // A small offset is removed only when it explains the negative openings: all of them,
+    // beyond the toe, come back within noise (a negative block mid-test is no zero offset).
+    bool explains = lowest < -noise && std::isfinite(x0);
+    for (std::size_t i = first_fit; explains && i < n; ++i)
+      explains = r.opening[i] - x0 >= -noise;
+    const bool shift = std::isfinite(x0) && (std::abs(x0) > offset_fraction * top || explains);
     if (shift) {
       for (double& x : r.opening)
         x -= x0;

@@ -85,8 +85,8 @@ std::string bluehill(const Raw& r) {
                   "PM\r\n\r\n\"Time\",\"Extension\",\"Load\",\"Crack length\"\r\n"
                   "\"(ms)\",\"(mm)\",\"(kN)\",\"(mm)\"\r\n";
   for (std::size_t i = 0; i < r.t.size(); ++i)
-    s += "\"" + fmt(r.t[i] * 1e3, '.', true) + "\",\"" + fmt(r.x[i]) + "\",\"" +
-         fmt(r.P[i] / 1e3) + "\",\"" + fmt(r.a[i]) + "\"\r\n";
+    s += "\"" + fmt(r.t[i] * 1e3, '.', true) + "\",\"" + fmt(r.x[i]) + "\",\"" + fmt(r.P[i] / 1e3) +
+         "\",\"" + fmt(r.a[i]) + "\"\r\n";
   return s;
 }
 
@@ -102,7 +102,8 @@ std::string testxpert(const Raw& r) {
 
 /// Tab-separated with units in the header and a "Raw Data" marker; minutes, inches, lbf.
 std::string tabbed(const Raw& r) {
-  std::string s = "Test\tDCB mode I\nRaw Data\nTime [min]\tExtension [in]\tLoad [lbf]\tCrack [in]\n";
+  std::string s =
+      "Test\tDCB mode I\nRaw Data\nTime [min]\tExtension [in]\tLoad [lbf]\tCrack [in]\n";
   for (std::size_t i = 0; i < r.t.size(); ++i)
     s += fmt(r.t[i] / 60) + "\t" + fmt(r.x[i] / inch) + "\t" + fmt(r.P[i] / lbf) + "\t" +
          fmt(r.a[i] / inch) + "\n";
@@ -112,7 +113,8 @@ std::string tabbed(const Raw& r) {
 /// MTS 793 MPT specimen data: the format line, blank-separated columns with a units row, the
 /// header repeated at each buffer; the opening in metres.
 std::string mts(const Raw& r) {
-  const std::string head = "Time      Crosshead   Load     Crack\n(s)       (m)         (N)      (mm)\n";
+  const std::string head =
+      "Time      Crosshead   Load     Crack\n(s)       (m)         (N)      (mm)\n";
   std::string s = "MTS793|MPT|ENU|1|0|.|/|:|1|0|0|A\nData Acquisition\n" + head;
   for (std::size_t i = 0; i < r.t.size(); ++i) {
     if (i == r.t.size() / 2)
@@ -132,7 +134,8 @@ std::string spreadsheet(const Raw& r) {
 
 const Layout layouts[] = {
     {"bluehill", "time_s: Time, opening_mm: Extension, load_N: Load, a_mm: Crack length", bluehill},
-    {"testxpert", "time_s: Prüfzeit, opening_mm: Standardweg (mm), load_N: Standardkraft, a_mm: Risslänge",
+    {"testxpert",
+     "time_s: Prüfzeit, opening_mm: Standardweg (mm), load_N: Standardkraft, a_mm: Risslänge",
      testxpert},
     {"tabbed", "time_s: Time, opening_mm: Extension, load_N: Load, a_mm: Crack", tabbed},
     {"mts", "time_s: Time, opening_mm: Crosshead, load_N: Load, a_mm: Crack", mts},
@@ -243,7 +246,8 @@ TEST(RecordLayouts, NumbersAsMachinesWriteThem) {
   EXPECT_DOUBLE_EQ(v, -0.25e-3);
   EXPECT_TRUE(parse_exported_number("1'000'000.5", '.', v));
   EXPECT_DOUBLE_EQ(v, 1000000.5);
-  EXPECT_FALSE(parse_exported_number("1,23.5", '.', v)) << "a group of two is not a thousands group";
+  EXPECT_FALSE(parse_exported_number("1,23.5", '.', v))
+      << "a group of two is not a thousands group";
   EXPECT_FALSE(parse_exported_number("12,5", '.', v));
   EXPECT_FALSE(parse_exported_number("inf", '.', v));
   EXPECT_FALSE(parse_exported_number("1e999", '.', v));
