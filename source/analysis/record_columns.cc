@@ -132,8 +132,12 @@ std::vector<double> si(const ExportedTable& t, const Found& f, std::size_t& grou
   std::size_t g = 0;
   auto v = t.numeric(f.index, &g);
   grouped += g;
-  for (double& x : v)
-    x *= f.factor;
+  for (std::size_t r = 0; r < v.size(); ++r) {
+    v[r] *= f.factor;
+    if (std::isinf(v[r])) // 1e308 kN: a number, but none a machine measures
+      throw InputError(t.source() + ":" + std::to_string(t.line_of_row(r)) + ": column '" +
+                       t.header()[f.index] + "' holds a value out of range");
+  }
   return v;
 }
 

@@ -353,3 +353,37 @@ TEST(RecordLayouts, NoCrackColumnGivesAnEmptyCrackLength) {
   e.crack_length = CrackLengthSource::equivalent;
   EXPECT_TRUE(read_test_records(g.path(), e).at(0).crack_length.empty());
 }
+
+// The fuzz seeds (tests/analysis/data/record_layout_*.csv, one per layout and one with a fault
+// of each class; scripts/fuzz.sh seeds the record reader's corpus with them) are read with the
+// column map on their first line, as the fuzz target does, and give the same first rows.
+TEST(RecordLayouts, FuzzSeedsAreRead) {
+  std::vector<TestRecord> records;
+  for (const char* name : {"bluehill", "testxpert", "tabbed", "mts", "spreadsheet", "faults"}) {
+    SCOPED_TRACE(name);
+    const std::string path =
+        std::string(FIBERBRIDGE_SOURCE_DIR) + "/tests/analysis/data/record_layout_" + name + ".csv";
+    std::ifstream in(path);
+    std::string first;
+    std::getline(in, first);
+    ASSERT_EQ(first.rfind("#columns: ", 0), 0u);
+    first = first.substr(10);
+    if (!first.empty() && first.back() == '\r')
+      first.pop_back();
+    records.push_back(read_test_records(path, with_map(first)).at(0));
+    std::printf("%s: %s\n", name, all(records.back().cleaning).c_str());
+  }
+  for (std::size_t k = 1; k < records.size(); ++k) {
+    // Same 9 digits written in every layout: equal to 1e-7 of each channel's largest value.
+    const std::size_t n = 30; // rows before the faults seed's first fault that changes values
+    ASSERT_GE(records[k].load.size(), n);
+    for (std::size_t i = 1; i < n; ++i) {
+      EXPECT_NEAR(records[k].load[i], records[0].load[i], 1e-7 * 100) << k << " row " << i;
+      EXPECT_NEAR(records[k].opening[i], records[0].opening[i], 1e-7 * 5 * mm) << k << " row " << i;
+    }
+  }
+  const std::string faults = all(records.back().cleaning);
+  for (const char* named :
+       {"negative opening", "without a crack reading", "spike", "a pause", "The last 10 row(s)"})
+    EXPECT_TRUE(contains(faults, named)) << named << " in\n" << faults;
+}
