@@ -98,6 +98,7 @@ public:
         r.root.push_back(c_.root[row]);
     }
     drop_rows_without_values(r);
+    flip_negative_channels(r);
     check_time_order(r);
     drop_repeated_times(r);
     drop_pauses(r);
@@ -182,6 +183,26 @@ private:
     if (r.row.empty())
       throw InputError(t_.source() + ": " + label() +
                        " has no row with both a load and an opening value");
+  }
+
+  /// Machines set up for compression, or with the extension counted downwards, write the load or
+  /// the opening negative. A channel whose most negative value is more than ten times its largest
+  /// positive one is turned over (the work P d(opening) is the same); a few noise-level negatives
+  /// in a positive record are left to the noise steps.
+  void flip_negative_channels(Rows& r) {
+    const auto flip = [&](std::vector<double>& v, const char* column, double unit,
+                          const char* unit_name) {
+      const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+      if (!(*lo < 0 && -*lo > 10 * std::max(*hi, 0.0)))
+        return;
+      const double lowest = *lo;
+      for (double& x : v)
+        x = -x;
+      say(std::string(column) + " is negative throughout (down to " + num(lowest / unit) + " " +
+          unit_name + "): the machine counts it the other way; its sign turned over.");
+    };
+    flip(r.load, "load_N", 1.0, "N");
+    flip(r.opening, "opening_mm", mm, "mm");
     if (!(peak(r) > 0))
       throw InputError(t_.source() + ": " + label() + " (" + lines(r, 0, r.row.size() - 1) +
                        ") never carries a positive load_N; nothing to reduce");

@@ -33,9 +33,88 @@ std::string trim(const std::string& s, const char* blanks = " \t\r") {
   return s.substr(b, s.find_last_not_of(blanks) - b + 1);
 }
 
+bool valid_utf8(const std::string& s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const std::size_t n = c < 0x80         ? 1
+                          : (c >> 5) == 6  ? 2
+                          : (c >> 4) == 14 ? 3
+                          : (c >> 3) == 30 ? 4
+                                           : 0;
+    if (n == 0 || i + n > s.size())
+      return false;
+    for (std::size_t k = 1; k < n; ++k)
+      if ((static_cast<unsigned char>(s[i + k]) >> 6) != 2)
+        return false;
+    i += n;
+  }
+  return true;
+}
+
+void append_utf8(std::string& out, unsigned long code) {
+  if (code < 0x80) {
+    out += static_cast<char>(code);
+  } else if (code < 0x800) {
+    out += static_cast<char>(0xC0 | (code >> 6));
+    out += static_cast<char>(0x80 | (code & 0x3F));
+  } else if (code < 0x10000) {
+    out += static_cast<char>(0xE0 | (code >> 12));
+    out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (code & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (code >> 18));
+    out += static_cast<char>(0x80 | ((code >> 12) & 0x3F));
+    out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (code & 0x3F));
+  }
+}
+
+/// A line that is not UTF-8 is read as Latin-1 / Windows-1252, what German and French Windows
+/// installations of testXpert and Bluehill write ("Prüfzeit", "µm"): each byte is its code point.
+std::string latin1_to_utf8(const std::string& s) {
+  std::string out;
+  out.reserve(s.size() + 8);
+  for (char c : s)
+    append_utf8(out, static_cast<unsigned char>(c));
+  return out;
+}
+
+/// Excel's "Unicode text" export is UTF-16 with a byte-order mark.
+std::string utf16_to_utf8(const std::string& raw) {
+  const bool little = static_cast<unsigned char>(raw[0]) == 0xFF;
+  std::string out;
+  out.reserve(raw.size() / 2);
+  unsigned long high = 0;
+  for (std::size_t i = 2; i + 1 < raw.size(); i += 2) {
+    const auto a = static_cast<unsigned char>(raw[i]), b = static_cast<unsigned char>(raw[i + 1]);
+    const unsigned long unit = little ? (b << 8 | a) : (a << 8 | b);
+    if (unit >= 0xD800 && unit < 0xDC00) {
+      high = unit;
+      continue;
+    }
+    if (unit >= 0xDC00 && unit < 0xE000) {
+      if (high)
+        append_utf8(out, 0x10000 + ((high - 0xD800) << 10) + (unit - 0xDC00));
+      high = 0;
+      continue;
+    }
+    high = 0;
+    append_utf8(out, unit);
+  }
+  return out;
+}
+
+bool is_utf16(const std::string& raw) {
+  return raw.size() >= 2 && ((static_cast<unsigned char>(raw[0]) == 0xFF &&
+                              static_cast<unsigned char>(raw[1]) == 0xFE) ||
+                             (static_cast<unsigned char>(raw[0]) == 0xFE &&
+                              static_cast<unsigned char>(raw[1]) == 0xFF));
+}
+
 /// Content lines: not blank, not a '#' comment. A byte-order mark is dropped; "\r\n", "\n" and
-/// a lone "\r" (old Mac exports) all end a line.
-std::vector<Line> content_lines(const std::string& raw,
+/// a lone "\r" (old Mac exports) all end a line. `latin1` is set when a line had to be read as
+/// Latin-1.
+std::vector<Line> content_lines(const std::string& raw, bool& latin1,
                                 std::size_t max_lines = static_cast<std::size_t>(-1)) {
   const std::string bom = "\xEF\xBB\xBF";
   const std::size_t start = raw.compare(0, bom.size(), bom) == 0 ? bom.size() : 0;
@@ -49,6 +128,10 @@ std::vector<Line> content_lines(const std::string& raw,
       j = raw.size();
     ++number;
     std::string t = trim(raw.substr(i, j - i));
+    if (std::any_of(t.begin(), t.end(), [](char c) { return c & 0x80; }) && !valid_utf8(t)) {
+      t = latin1_to_utf8(t);
+      latin1 = true;
+    }
     if (!t.empty() && t[0] != '#')
       lines.push_back({number, std::move(t)});
     i = j + 1;
@@ -352,13 +435,15 @@ bool parse_exported_number(const std::string& cell, char decimal, double& value,
 
 bool TableLayout::is_export() const {
   return delimiter != ',' || decimal != '.' || units_line != 0 || preamble_lines != 0 ||
-         repeated_headers != 0 || short_rows != 0;
+         std::string(encoding) != "UTF-8" || repeated_headers != 0 || short_rows != 0;
 }
 
 std::string TableLayout::describe() const {
   std::ostringstream s;
   s << "Read as " << delimiter_name(delimiter) << "-separated with a decimal "
     << (decimal == ',' ? "comma" : "point");
+  if (std::string(encoding) != "UTF-8")
+    s << " (text in " << encoding << ")";
   if (preamble_lines)
     s << "; " << preamble_lines << " preamble line(s) above the header on line " << header_line
       << " skipped";
@@ -375,9 +460,14 @@ std::string TableLayout::describe() const {
   return s.str();
 }
 
-TableLayout detect_table_layout(const std::string& text, const std::string& source) {
+TableLayout detect_table_layout(const std::string& raw, const std::string& source) {
+  const std::string text = is_utf16(raw) ? utf16_to_utf8(raw) : raw;
+  bool latin1 = false;
   // Only the lines detection can look at: its cost does not grow with the record.
-  return detect(content_lines(text, max_detection_lines + data_run), text, source).layout;
+  auto layout =
+      detect(content_lines(text, latin1, max_detection_lines + data_run), text, source).layout;
+  layout.encoding = is_utf16(raw) ? "UTF-16" : latin1 ? "Latin-1" : "UTF-8";
+  return layout;
 }
 
 ExportedTable ExportedTable::read(const std::string& path) {
@@ -389,9 +479,12 @@ ExportedTable ExportedTable::read(const std::string& path) {
   return parse(buffer.str(), path);
 }
 
-ExportedTable ExportedTable::parse(const std::string& text, const std::string& source_name) {
-  const std::vector<Line> lines = content_lines(text);
+ExportedTable ExportedTable::parse(const std::string& raw, const std::string& source_name) {
+  const std::string text = is_utf16(raw) ? utf16_to_utf8(raw) : raw;
+  bool latin1 = false;
+  const std::vector<Line> lines = content_lines(text, latin1);
   Detected d = detect(lines, text, source_name);
+  d.layout.encoding = is_utf16(raw) ? "UTF-16" : latin1 ? "Latin-1" : "UTF-8";
   ExportedTable t;
   t.source_ = source_name;
   t.layout_ = d.layout;

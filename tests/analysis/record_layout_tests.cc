@@ -387,3 +387,58 @@ TEST(RecordLayouts, FuzzSeedsAreRead) {
        {"negative opening", "without a crack reading", "spike", "a pause", "The last 10 row(s)"})
     EXPECT_TRUE(contains(faults, named)) << named << " in\n" << faults;
 }
+
+// German and French Windows exports are Latin-1 / Windows-1252 ("Prüfzeit" with a single byte
+// for ü); Excel's "Unicode text" is UTF-16 with a byte-order mark. Both read as UTF-8, so a map
+// written in UTF-8 matches.
+TEST(RecordLayouts, EncodingsAreRead) {
+  const Raw raw = raw_record();
+  const TestRecord plain = read_test_records(shared, with_map(shared_map)).at(0);
+  std::string latin1 = testxpert(raw);
+  for (std::size_t p; (p = latin1.find("\xC3\xBC")) != std::string::npos;) // ü
+    latin1.replace(p, 2, "\xFC");
+  for (std::size_t p; (p = latin1.find("\xC3\xA4")) != std::string::npos;) // ä
+    latin1.replace(p, 2, "\xE4");
+  TempFile f("latin1.csv", latin1);
+  const auto r = read_test_records(f.path(), with_map(layouts[1].map)).at(0);
+  EXPECT_TRUE(contains(all(r.cleaning), "(text in Latin-1)")) << all(r.cleaning);
+  expect_same(r.load, plain.load, 1e-7, "load");
+
+  const std::string ascii = tabbed(raw);
+  std::string utf16 = "\xFF\xFE";
+  for (char c : ascii) {
+    utf16 += c;
+    utf16 += '\0';
+  }
+  TempFile g("utf16.txt", utf16);
+  const auto u = read_test_records(g.path(), with_map(layouts[2].map)).at(0);
+  EXPECT_TRUE(contains(all(u.cleaning), "(text in UTF-16)")) << all(u.cleaning);
+  expect_same(u.opening, plain.opening, 1e-7, "opening");
+}
+
+// A machine set up for compression writes the load and the extension negative, and a crosshead
+// position is not zeroed (here it starts at -2 mm). Both signs are turned over, the 2 mm offset
+// removed from the initial linear part: the openings are the plain record's shifted by one
+// constant (its own seating offset, under 0.1 mm), the loads are the plain record's.
+TEST(RecordLayouts, CompressionSignsAndAnUnzeroedPosition) {
+  const Raw raw = raw_record();
+  const TestRecord plain = read_test_records(shared, with_map(shared_map)).at(0);
+  std::string s = "Time,Extension,Load,Crack length\n(s),(mm),(N),(mm)\n";
+  for (std::size_t i = 0; i < raw.t.size(); ++i)
+    s += fmt(raw.t[i]) + "," + fmt(-(raw.x[i] + 2.0)) + "," + fmt(-raw.P[i]) + "," + fmt(raw.a[i]) +
+         "\n";
+  TempFile f("compression.csv", s);
+  const auto r = read_test_records(f.path(), with_map(layouts[0].map)).at(0);
+  const std::string c = all(r.cleaning);
+  EXPECT_TRUE(contains(c, "load_N is negative throughout")) << c;
+  EXPECT_TRUE(contains(c, "opening_mm is negative throughout")) << c;
+  EXPECT_TRUE(contains(c, "Opening zero offset 2.0")) << c;
+  expect_same(r.load, plain.load, 1e-7, "load");
+  ASSERT_EQ(r.opening.size(), plain.opening.size());
+  const double shift = plain.opening.back() - r.opening.back();
+  EXPECT_LT(std::abs(shift), 0.1 * mm);
+  // After the toe (rows the shift would take below zero, set to 0) one constant, to the digits.
+  for (std::size_t i = 0; i < r.opening.size(); ++i)
+    if (plain.opening[i] > shift + 0.01 * mm)
+      ASSERT_NEAR(plain.opening[i] - r.opening[i], shift, 1e-6 * mm) << "row " << i;
+}
