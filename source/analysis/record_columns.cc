@@ -141,6 +141,47 @@ std::vector<double> si(const ExportedTable& t, const Found& f, std::size_t& grou
   return v;
 }
 
+/// Clock times ("13:45:02.25", "45:02,25", "2024-05-01 13:45:02"), as data loggers write the
+/// time, in seconds from the first row; a clock passing midnight goes on counting. nullopt when
+/// a cell that is not missing is no clock time.
+std::optional<std::vector<double>> clock_seconds(const std::vector<std::string>& cells,
+                                                 char decimal) {
+  std::vector<double> out(cells.size(), NAN);
+  double first = NAN, day = 0, last = NAN;
+  for (std::size_t r = 0; r < cells.size(); ++r) {
+    if (is_missing_value(cells[r]))
+      continue;
+    std::string c = cells[r];
+    const auto space = c.find_last_of(" T");
+    if (space != std::string::npos)
+      c = c.substr(space + 1); // the date before the time of day
+    double parts[3];
+    std::size_t n = 0, from = 0;
+    while (true) {
+      const auto colon = c.find(':', from);
+      const std::string part = c.substr(from, colon == std::string::npos ? colon : colon - from);
+      if (n == 3 || !parse_exported_number(part, decimal, parts[n]) || parts[n] < 0)
+        return std::nullopt;
+      ++n;
+      if (colon == std::string::npos)
+        break;
+      from = colon + 1;
+    }
+    if (n < 2)
+      return std::nullopt;
+    double seconds = 0;
+    for (std::size_t k = 0; k < n; ++k)
+      seconds = 60 * seconds + parts[k];
+    if (!std::isnan(last) && seconds + day < last - 43200)
+      day += 86400; // past midnight
+    last = seconds + day;
+    if (std::isnan(first))
+      first = last;
+    out[r] = last - first;
+  }
+  return out;
+}
+
 } // namespace
 
 RecordColumns read_record_columns(const ExportedTable& t, const RecordReadOptions& o) {
@@ -165,7 +206,15 @@ RecordColumns read_record_columns(const ExportedTable& t, const RecordReadOption
   r.load = si(t, *load, grouped);
   if (time) {
     r.has_time = true;
-    r.time = si(t, *time, grouped);
+    try {
+      r.time = si(t, *time, grouped);
+    } catch (const InputError&) {
+      const auto clock = clock_seconds(t.text(time->index), t.layout().decimal);
+      if (!clock)
+        throw;
+      r.time = *clock;
+      used.push_back("time_s read as clock times (seconds from the first row)");
+    }
   }
   if (root) {
     r.has_root = true;

@@ -435,7 +435,8 @@ bool parse_exported_number(const std::string& cell, char decimal, double& value,
 
 bool TableLayout::is_export() const {
   return delimiter != ',' || decimal != '.' || units_line != 0 || preamble_lines != 0 ||
-         std::string(encoding) != "UTF-8" || repeated_headers != 0 || short_rows != 0;
+         std::string(encoding) != "UTF-8" || repeated_headers != 0 || short_rows != 0 ||
+         trailer_lines != 0;
 }
 
 std::string TableLayout::describe() const {
@@ -454,6 +455,9 @@ std::string TableLayout::describe() const {
   if (repeated_headers)
     s << "; " << repeated_headers
       << " repeat(s) of the header or units row inside the data skipped";
+  if (trailer_lines)
+    s << "; " << trailer_lines << " line(s) after the data from line " << trailer_line
+      << " (results or notes, not rows) set aside";
   if (short_rows)
     s << "; " << short_rows << " row(s) with fewer cells than the header (missing cells empty)";
   s << ".";
@@ -509,7 +513,20 @@ ExportedTable ExportedTable::parse(const std::string& raw, const std::string& so
     c.reserve(lines.size() - d.first_data);
   t.line_numbers_.reserve(lines.size() - d.first_data);
   std::vector<std::string> cells;
-  for (std::size_t i = d.first_data; i < lines.size(); ++i) {
+  // A trailer after the data (Bluehill and testXpert can append results: "Maximum Load,95.2")
+  // is not data: the lines after the last data-like one are set aside and counted.
+  std::size_t end = lines.size();
+  while (end > d.first_data + 1) {
+    const bool ok = split_cells(lines[end - 1].text, d.layout.delimiter, cells);
+    if (ok && cells.size() >= 2 && is_data(cells, d.layout.decimal))
+      break;
+    --end;
+  }
+  if (end < lines.size()) {
+    t.layout_.trailer_lines = lines.size() - end;
+    t.layout_.trailer_line = lines[end].number;
+  }
+  for (std::size_t i = d.first_data; i < end; ++i) {
     const std::string at = source_name + ":" + std::to_string(lines[i].number);
     if (!split_cells(lines[i].text, d.layout.delimiter, cells))
       throw InputError(at + ": a quoted cell has no closing quote or text follows it (quoted "

@@ -442,3 +442,34 @@ TEST(RecordLayouts, CompressionSignsAndAnUnzeroedPosition) {
     if (plain.opening[i] > shift + 0.01 * mm)
       ASSERT_NEAR(plain.opening[i] - r.opening[i], shift, 1e-6 * mm) << "row " << i;
 }
+
+// A data logger's clock times for the time, and results appended after the data (Bluehill's
+// "Maximum Load" lines): the time is read as seconds from the first row, the trailer set aside.
+TEST(RecordLayouts, ClockTimesAndATrailer) {
+  const Raw raw = raw_record();
+  const TestRecord plain = read_test_records(shared, with_map(shared_map)).at(0);
+  std::string s = "Time,Extension (mm),Load (N),Crack (mm)\n";
+  for (std::size_t i = 0; i < raw.t.size(); ++i) {
+    const double t = 23 * 3600 + 59 * 60 + raw.t[i]; // passes midnight 44 s into the record
+    const double tod = std::fmod(t, 86400);
+    char clock[64];
+    std::snprintf(clock, sizeof clock, "2024-05-0%d %02d:%02d:%06.3f", t < 86400 ? 1 : 2,
+                  int(tod / 3600), int(std::fmod(tod, 3600) / 60), std::fmod(tod, 60));
+    s +=
+        std::string(clock) + "," + fmt(raw.x[i]) + "," + fmt(raw.P[i]) + "," + fmt(raw.a[i]) + "\n";
+  }
+  s += "\nMaximum Load (N),99.8\nOperator,AB\n";
+  TempFile f("clock.csv", s);
+  const auto r =
+      read_test_records(f.path(), with_map("time_s: Time, opening_mm: Extension, load_N: Load, "
+                                           "a_mm: Crack"))
+          .at(0);
+  const std::string c = all(r.cleaning);
+  EXPECT_TRUE(contains(c, "time_s read as clock times")) << c;
+  EXPECT_TRUE(contains(c, "2 line(s) after the data from line")) << c;
+  ASSERT_EQ(r.time.size(), plain.time.size());
+  // Milliseconds written: the times from the first row agree to 1 ms.
+  for (std::size_t i = 0; i < r.time.size(); ++i)
+    ASSERT_NEAR(r.time[i], plain.time[i] - plain.time[0], 1e-3) << "row " << i;
+  expect_same(r.load, plain.load, 1e-7, "load");
+}

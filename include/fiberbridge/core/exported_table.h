@@ -14,6 +14,7 @@
 //  - quoted cells ("" inside is one quote), '#' comment lines, blank lines, a UTF-8 byte-order
 //    mark, CRLF or CR line ends; the header or units row repeated inside the data (MTS writes one
 //    per buffer) skipped; rows shorter than the header read as empty trailing cells;
+//  - lines after the last data row that are not data (appended results) set aside;
 //  - the text encoding: UTF-8, UTF-16 with a byte-order mark, or Latin-1 / Windows-1252 lines
 //    (German and French Windows exports), all read as UTF-8.
 #include <cstddef>
@@ -31,6 +32,8 @@ struct TableLayout {
   std::size_t first_data_line = 0;  ///< line of the first data row
   std::size_t preamble_lines = 0;   ///< non-blank, non-comment lines above the header
   std::size_t repeated_headers = 0; ///< header / units rows repeated inside the data (skipped)
+  std::size_t trailer_lines = 0;    ///< non-data lines after the last data row (set aside)
+  std::size_t trailer_line = 0;     ///< the first of them
   std::size_t short_rows = 0;       ///< rows with fewer cells than the header (padded empty)
   /// "UTF-8"; "UTF-16" (a byte-order mark: Excel's Unicode text) or "Latin-1" (lines that are
   /// not UTF-8, read as Latin-1 / Windows-1252) when converted to UTF-8 for reading
