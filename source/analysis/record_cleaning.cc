@@ -272,12 +272,22 @@ private:
       return;
     std::size_t empty = 0, codes = 0, first_code = 0;
     double example = 0;
+    bool positive_seen = false;
     for (std::size_t i = 0; i < r.a.size(); ++i) {
       if (std::isnan(r.a[i])) {
         ++empty;
         continue;
       }
-      if (r.a[i] <= 0 || is_dropout_code(r.a[i] / c_.crack_factor)) {
+      const bool code = is_dropout_code(r.a[i] / c_.crack_factor);
+      // A zero or negative length before any positive reading is not a dropout: the column is
+      // likely the crack extension (0 at the start), which read as a length would be wrong.
+      if (r.a[i] <= 0 && !code && !positive_seen)
+        throw InputError(at(r, i) + "a_mm = " + num(r.a[i] / mm) +
+                         " before any positive crack reading; a crack length is measured from "
+                         "the load line and is > 0 (a column of crack extension needs a0 added; "
+                         "an empty cell or a dropout code such as -999 reads as no reading)");
+      positive_seen = positive_seen || (r.a[i] > 0 && !code);
+      if (r.a[i] <= 0 || code) {
         if (codes++ == 0) {
           first_code = i;
           example = r.a[i] / c_.crack_factor;

@@ -380,6 +380,19 @@ TEST(RecordFaults, CrackSpikeIsNoReading) {
   EXPECT_TRUE(std::isnan(r.crack_length[k]));
 }
 
+// A crack column that starts at 0 is the crack extension, not the length from the load line:
+// read as a length it would give a wrong R, so it is refused (a 0 after positive readings is a
+// tracker's dropout, MissingCrackReadingsAreRowsWithoutAReading).
+TEST(RecordFaults, CrackExtensionColumnIsRefused) {
+  auto rows = raw_rows();
+  const double a0 = value(rows[0][3]);
+  for (auto& row : rows)
+    row[3] = fmt(value(row[3]) - a0);
+  TempFile f("extension.csv", rows);
+  const std::string m = refusal(f.path());
+  EXPECT_TRUE(contains(m, "extension.csv:2: a_mm = 0 before any positive crack reading")) << m;
+}
+
 // What must be refused: time going back, a crack going back beyond the tolerance, no growth.
 TEST(RecordFaults, WhatWouldGiveAWrongResultIsRefused) {
   {
