@@ -79,10 +79,12 @@ struct RecordReadOptions {
 /// Values are converted to SI from the file's units. Rows are then cleaned, each step that
 /// changed something stated as a sentence with row counts and lines in TestRecord::cleaning
 /// (docs/design.md section 6 lists the classes):
+///  - a load or opening negative throughout (a compression set-up) turned over;
 ///  - rows without a time, load or opening value dropped; rows repeating the time of the row
 ///    before, or repeating every channel while the time advances (a pause), dropped;
-///  - crack cells that are empty, NaN, <= 0 or a dropout code (999, -9999, ...) are rows without
-///    a reading (NaN), kept for load and opening, a trailing block of them named;
+///  - crack cells that are empty, NaN, a dropout code (999, -9999, ...) or <= 0 after a positive
+///    reading are rows without a reading (NaN), kept for load and opening, a trailing block of
+///    them named;
 ///  - single-row spikes in load or opening replaced by the mean of their neighbours; a short
 ///    dropout of a channel to ~0 dropped; an opening re-zeroed mid-test continued from before;
 ///  - negative loads before the test started set to 0; negative openings or loads within
@@ -93,7 +95,8 @@ struct RecordReadOptions {
 ///    readings stepping back within the tolerance held at the running maximum.
 /// Throws InputError naming file:line and the reason for: a missing column (listing the headers
 /// found), an unknown or unfitting unit, a non-number, time going back, a load channel re-zeroed
-/// mid-test, a crack length going back by more than the tolerance, a negative opening or load
+/// mid-test, a crack length <= 0 before any positive reading (a crack-extension column), a crack
+/// length going back by more than the tolerance, a negative opening or load
 /// beyond noise that no zero offset explains, no crack growth (when the record has crack
 /// readings), and fewer than 8 rows left after cleaning.
 std::vector<TestRecord> read_test_records(const std::string& path,
