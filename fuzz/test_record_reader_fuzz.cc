@@ -1,9 +1,15 @@
 // libFuzzer target: the test-record reader (analysis/test_record.h read_test_records) with its
-// column map (RecordColumnMap::parse, the scene's Test/Columns). Input: a record file; a first
-// line "#columns: MAP" (a comment to the reader, so bundled records are valid inputs) is parsed
-// as the column map.
+// column map (RecordColumnMap::parse, the scene's Test/Columns), over every layout the reader
+// detects (core/exported_table.h: delimiters, decimal comma, preamble, units rows, quotes,
+// thousands separators) and every cleaning step. Input: a record file; a first line
+// "#columns: MAP" (a comment to the reader, so bundled records are valid inputs) is parsed as
+// the column map. The seed corpus (scripts/fuzz.sh) holds the shared records and one file per
+// layout and per fault class (tests/analysis/data/record_layout_*.csv).
 #include "fiberbridge/analysis/test_record.h"
+#include "fiberbridge/core/exported_table.h"
 #include "fuzz_input.h"
+
+#include <cmath>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace fiberbridge;
@@ -11,11 +17,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fuzz::expect_success_or_input_error([&] {
     analysis::RecordReadOptions options;
     const std::string key = "#columns: ";
-    if (text.rfind(key, 0) == 0)
-      options.columns = analysis::RecordColumnMap::parse(
-          text.substr(key.size(), text.find('\n') - key.size()), "fuzz/Columns");
-    for (const auto& r : analysis::read_test_records(fuzz::as_file(text, ".csv"), options))
-      (void)analysis::crack_reading_rows(r);
+    if (text.rfind(key, 0) == 0) {
+      std::string map = text.substr(key.size(), text.find('\n') - key.size());
+      if (!map.empty() && map.back() == '\r')
+        map.pop_back();
+      options.columns = analysis::RecordColumnMap::parse(map, "fuzz/Columns");
+    }
+    // The three crack-length sources, chosen by the input's length (deterministic per input).
+    options.crack_length = static_cast<analysis::CrackLengthSource>(size % 3);
+    for (const auto& r : analysis::read_test_records(fuzz::as_file(text, ".csv"), options)) {
+      const auto rows = analysis::crack_reading_rows(r);
+      // The hand-over contract (test_record.h): one crack entry per row or none; readings are
+      // rows with a finite, strictly increasing crack length; openings and loads finite.
+      if (!r.crack_length.empty() && r.crack_length.size() != r.opening.size())
+        __builtin_trap();
+      for (std::size_t k = 0; k < rows.size(); ++k)
+        if (!std::isfinite(r.crack_length[rows[k]]) ||
+            (k && !(r.crack_length[rows[k]] > r.crack_length[rows[k - 1]])))
+          __builtin_trap();
+      for (std::size_t i = 0; i < r.opening.size(); ++i)
+        if (!std::isfinite(r.opening[i]) || !std::isfinite(r.load[i]) || r.opening[i] < 0)
+          __builtin_trap();
+    }
   });
   return 0;
 }

@@ -102,7 +102,9 @@ void write_test_record_csv(const std::string& path, const TestRecord& r,
   CsvWriter w(path, header, comment_lines);
   for (std::size_t i = 0; i < r.opening.size(); ++i) {
     std::vector<double> v = {r.time.empty() ? static_cast<double>(i) : r.time[i],
-                             r.opening[i] / units::mm, r.load[i], r.crack_length[i] / units::mm};
+                             r.opening[i] / units::mm, r.load[i],
+                             // NaN (an empty cell): no reading on this row, or no crack column
+                             (r.crack_length.empty() ? NAN : r.crack_length[i]) / units::mm};
     if (root)
       v.push_back(r.delta_root[i] / units::mm);
     w.row(v);

@@ -77,8 +77,10 @@ void write_tables(const ReduceOutcome& r, const std::string& out_dir) {
     for (std::size_t i = 0; i < rec.opening.size(); ++i) {
       const bool fresh = next < readings.size() && readings[next] == i;
       next += fresh;
-      c.row({static_cast<double>(rec.line[i]), rec.opening[i] / mm, rec.load[i],
-             rec.crack_length[i] / mm, fresh ? 1.0 : 0.0});
+      // NaN (an empty cell) on a row without a crack reading, or in a record without any.
+      const double a = rec.crack_length.empty() ? NAN : rec.crack_length[i];
+      c.row({static_cast<double>(rec.line[i]), rec.opening[i] / mm, rec.load[i], a / mm,
+             fresh ? 1.0 : 0.0});
     }
     c.close();
   }

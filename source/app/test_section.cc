@@ -18,7 +18,14 @@ void TestSection::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Columns", "", dealii::Patterns::Anything(),
                     "Our column names mapped to the files' headers, e.g. 'time_s: Time (s), "
                     "opening_mm: Extension (mm), load_N: Load (N), a_mm: Crack length (mm)'; "
-                    "optional delta_root_mm, record. Empty: the files use our names.");
+                    "optional a_mm, delta_root_mm, record. A header may be named with or "
+                    "without its unit ('opening_mm: Extension' matches 'Extension (mm)'); the "
+                    "file's unit converts it. Empty: the files use our names. The files' layout "
+                    "(delimiter, decimal comma, preamble, units row) is detected.");
+  prm.declare_entry("Crack length", "auto", dealii::Patterns::Selection("auto|measured|equivalent"),
+                    "Where crack lengths come from: auto (the a_mm column when the file has one), "
+                    "measured (a_mm required) or equivalent (any a_mm ignored: R against the "
+                    "equivalent crack length from the compliance).");
   prm.declare_entry("Use specimen initial crack", "false", dealii::Patterns::Bool(),
                     "a0 = Specimen/Initial crack; false: each record's first crack reading.");
   prm.declare_entry("Smoothing window", "0", dealii::Patterns::Double(0),
@@ -46,6 +53,7 @@ void TestSection::parse_parameters(dealii::ParameterHandler& prm) {
       files.push_back(f.substr(b, f.find_last_not_of(" \t") - b + 1));
   }
   columns = prm.get("Columns");
+  crack_length = prm.get("Crack length");
   crack_back_tolerance = prm.get_double("Crack back tolerance") * mm;
   use_specimen_initial_crack = prm.get_bool("Use specimen initial crack");
   smoothing_window = prm.get_double("Smoothing window") * mm;
@@ -70,6 +78,9 @@ analysis::RecordReadOptions TestSection::read_options(const std::string& scene_f
   analysis::RecordReadOptions read;
   read.columns = analysis::RecordColumnMap::parse(columns, scene_file + ": Test/Columns");
   read.crack_back_tolerance = crack_back_tolerance;
+  read.crack_length = crack_length == "measured"     ? analysis::CrackLengthSource::measured
+                      : crack_length == "equivalent" ? analysis::CrackLengthSource::equivalent
+                                                     : analysis::CrackLengthSource::automatic;
   return read;
 }
 

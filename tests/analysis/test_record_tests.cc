@@ -101,8 +101,13 @@ TEST(TestRecordReader, MachineHeadersThroughTheColumnMap) {
   EXPECT_DOUBLE_EQ(r.opening[5], 2.5 * mm);
   // Without the map the reader names the header it looked for and the columns it found.
   const std::string m = message_of(f.path());
-  EXPECT_TRUE(contains(m, ":1: missing column 'opening_mm'")) << m;
-  EXPECT_TRUE(contains(m, "Extension (mm)")) << m;
+  EXPECT_TRUE(contains(m, ":1: no column 'opening_mm' for opening_mm (headers found: 'Time (s)', "
+                          "'Extension (mm)'"))
+      << m;
+  // It lists what it found and proposes no header of its own choosing (it used to suggest
+  // 'opening_mm: Time (s)', the first header, which is wrong).
+  EXPECT_FALSE(contains(m, "opening_mm: Time")) << m;
+  EXPECT_TRUE(contains(m, "'opening_mm: <header>'")) << m;
 }
 
 TEST(TestRecordReader, ColumnMapErrors) {
@@ -212,10 +217,15 @@ TEST(TestRecordReader, CrackLengthGoingBack) {
 
 TEST(TestRecordReader, MissingColumn) {
   TempFile f("cols.csv", "time_s,opening_mm,load_N\n0,0,0\n1,1,1\n");
-  const std::string m = message_of(f.path());
-  EXPECT_TRUE(contains(m, "cols.csv:1: missing column 'a_mm' for a_mm (columns present: "
-                          "time_s, opening_mm, load_N"))
+  RecordReadOptions o;
+  o.crack_length = CrackLengthSource::measured;
+  const std::string m = message_of(f.path(), o);
+  EXPECT_TRUE(contains(m, "cols.csv:1: no column 'a_mm' for a_mm (headers found: 'time_s', "
+                          "'opening_mm', 'load_N')"))
       << m;
+  TempFile g("noload.csv", "time_s,opening_mm,a_mm\n0,0,30\n1,1,31\n");
+  const std::string n = message_of(g.path());
+  EXPECT_TRUE(contains(n, "noload.csv:1: no column 'load_N' for load_N")) << n;
 }
 
 TEST(TestRecordReader, NaNCell) {

@@ -69,3 +69,18 @@ TEST(TestSectionStruct, FilesAreTrimmedAndAMissingRecordIsNamed) {
         << e.what();
   }
 }
+
+TEST(TestSectionStruct, CrackLengthSourceReachesTheReader) {
+  for (const auto& [text, source] :
+       {std::pair{"auto", analysis::CrackLengthSource::automatic},
+        std::pair{"measured", analysis::CrackLengthSource::measured},
+        std::pair{"equivalent", analysis::CrackLengthSource::equivalent}}) {
+    dealii::ParameterHandler prm;
+    app::declare_section<app::TestSection>(prm, "Test");
+    prm.enter_subsection("Test");
+    prm.set("Crack length", text);
+    prm.leave_subsection();
+    const auto t = app::parse_section<app::TestSection>(prm, "Test");
+    EXPECT_EQ(t.read_options("scene.prm").crack_length, source) << text;
+  }
+}

@@ -17,15 +17,21 @@ struct TestRecord {
   std::vector<double> time;    ///< [s]; empty when the file has no time column
   std::vector<double> opening; ///< load-line opening [m]
   std::vector<double> load;    ///< load on the whole specimen width [N]
-  std::vector<double> crack_length;  ///< crack length from the load line [m]
+  /// Crack length from the load line [m], one entry per row; NaN on a row without a reading
+  /// (empty or NaN cell, a dropout value). EMPTY when the record has no crack column at all or
+  /// the reading is switched off (RecordReadOptions::crack_length = equivalent).
+  std::vector<double> crack_length;
   std::vector<double> delta_root;    ///< measured notch-root opening [m]; empty when not measured
   std::vector<std::size_t> line;     ///< source line of each kept row (1-based, for messages)
   std::vector<std::string> cleaning; ///< what the reader did to the raw rows, one sentence each
 };
 
-/// Which header of the file holds each of our columns. Our names are time_s, opening_mm, load_N,
-/// a_mm (required but time_s), delta_root_mm and record (optional); the units are in our names.
-/// Without an entry a column is looked up under our own name.
+/// Which header of the file holds each of our columns. Our names are time_s, opening_mm, load_N
+/// (required but time_s), a_mm, delta_root_mm and record (optional); the units are in our names.
+/// Without an entry a column is looked up under our own name. An entry names the file's header
+/// with or without its unit ('opening_mm: Extension' matches a header 'Extension (mm)' or
+/// 'Extension' over a units row '(mm)'); the file's unit then converts it (kN, lbf, in, ms, ...),
+/// else the entry's unit, else the unit in our name.
 struct RecordColumnMap {
   std::map<std::string, std::string> file_header; ///< our name -> header in the file
 
@@ -38,9 +44,21 @@ struct RecordColumnMap {
   std::string header_for(const std::string& ours) const;
 };
 
-/// How the reader cleans what a real machine writes (docs/design.md, "Test records").
+/// Where a record's crack lengths come from.
+enum class CrackLengthSource {
+  automatic, ///< the crack column when the file has one (a_mm or mapped), else none
+  measured,  ///< the crack column is required
+  equivalent ///< any crack column is ignored: crack_length stays empty
+};
+
+/// How the reader cleans what a real machine writes (docs/design.md section 6).
 struct RecordReadOptions {
   RecordColumnMap columns;
+  CrackLengthSource crack_length = CrackLengthSource::automatic;
+  /// A negative opening or load within this fraction of the channel's largest value is reading
+  /// noise around zero (an extensometer zeroed 0.0002 mm off on a record reaching several mm)
+  /// and set to 0; a larger one is an error unless the zero offset explains it.
+  double noise_fraction = 1e-3;
   /// A crack reading may fall below the longest earlier reading by at most this much [m]
   /// (optical tracking noise: the shared records in data/dcb_records fall back by up to 0.5 mm);
   /// such readings are replaced by the running maximum, because a crack does not heal. A larger
@@ -55,29 +73,38 @@ struct RecordReadOptions {
   double unload_fraction = 0.01;
 };
 
-/// Reads one CSV record file; one TestRecord per value of the `record` column (in order of first
-/// appearance), else one named after the file's stem. Rows are cleaned in this order, each step
-/// that changed something stated as a sentence in TestRecord::cleaning:
-///  1. negative loads before the test started (before the load first exceeds 5 % of its peak:
-///     load-cell offset and noise) set to 0 N;
-///  2. rows after the final drop (see RecordReadOptions::final_drop_fraction) dropped;
-///  3. rows that repeat the time of the row before dropped (the first of each run kept);
-///  4. unload/reload segments dropped: from the first row whose opening falls below the largest
-///     opening so far until the opening exceeds it again, when it fell by more than
-///     unload_fraction (the envelope is kept; an unloading at the end, where the opening never
-///     recovers, is dropped the same way; smaller falls are reading noise and are kept);
-///  5. crack readings that step back within the tolerance replaced by the running maximum;
-///  6. repeated crack readings are kept (the load and opening of those rows are good) and
-///     counted: crack_reading_rows() gives the rows where the reading changes.
-/// Throws InputError naming file:line and the reason for: a missing column (with the columns
-/// present), a non-number, NaN or empty cell, decreasing time, a crack length that goes back by
-/// more than the tolerance, a negative opening or crack length, a negative load after the test
-/// started, no crack growth at all, and fewer than 8 rows left after cleaning.
+/// Reads one record file as written by us or exported by a testing machine (layout, delimiter,
+/// decimal comma, preamble, units detected: core/exported_table.h); one TestRecord per value of
+/// the `record` column (in order of first appearance), else one named after the file's stem.
+/// Values are converted to SI from the file's units. Rows are then cleaned, each step that
+/// changed something stated as a sentence with row counts and lines in TestRecord::cleaning
+/// (docs/design.md section 6 lists the classes):
+///  - a load or opening negative throughout (a compression set-up) turned over;
+///  - rows without a time, load or opening value dropped; rows repeating the time of the row
+///    before, or repeating every channel while the time advances (a pause), dropped;
+///  - crack cells that are empty, NaN, a dropout code (999, -9999, ...) or <= 0 after a positive
+///    reading are rows without a reading (NaN), kept for load and opening, a trailing block of
+///    them named;
+///  - single-row spikes in load or opening replaced by the mean of their neighbours; a short
+///    dropout of a channel to ~0 dropped; an opening re-zeroed mid-test continued from before;
+///  - negative loads before the test started set to 0; negative openings or loads within
+///    noise_fraction of their largest value set to 0; the opening's zero offset, extrapolated
+///    from the initial linear part of load against opening, removed when it matters;
+///  - rows after the final drop and unload/reload segments dropped (see the options);
+///  - a single crack reading far beyond both neighbours (a tracking spike) made no reading;
+///    readings stepping back within the tolerance held at the running maximum.
+/// Throws InputError naming file:line and the reason for: a missing column (listing the headers
+/// found), an unknown or unfitting unit, a non-number, time going back, a load channel re-zeroed
+/// mid-test, a crack length <= 0 before any positive reading (a crack-extension column), a crack
+/// length going back by more than the tolerance, a negative opening or load
+/// beyond noise that no zero offset explains, no crack growth (when the record has crack
+/// readings), and fewer than 8 rows left after cleaning.
 std::vector<TestRecord> read_test_records(const std::string& path,
                                           const RecordReadOptions& options = {});
 
-/// Rows of `r` where a new crack reading is made: the first row, and every row whose crack length
-/// differs from the row before (the rows in between repeat a stale reading).
+/// Rows of `r` where a new crack reading is made: the first row with a reading, and every row
+/// whose reading differs from the last reading before it (rows without a reading (NaN) and rows
+/// repeating a stale reading are skipped). Empty when the record has no crack readings.
 std::vector<std::size_t> crack_reading_rows(const TestRecord& r);
 
 /// Specimen geometry a reduction needs, SI. NaN means "not given".

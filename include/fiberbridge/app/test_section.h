@@ -11,8 +11,11 @@
 namespace fiberbridge::app {
 
 struct TestSection {
-  std::vector<std::string> files;     ///< as written in the scene (trimmed, empty entries dropped)
-  std::string columns;                ///< the column map as written (read_options parses it)
+  std::vector<std::string> files; ///< as written in the scene (trimmed, empty entries dropped)
+  std::string columns;            ///< the column map as written (read_options parses it)
+  /// "auto" (the crack column when there is one), "measured" (required) or "equivalent" (any
+  /// crack column ignored: R against the compliance's equivalent crack length)
+  std::string crack_length = "auto";
   double crack_back_tolerance = 1e-3; ///< [m]
   bool use_specimen_initial_crack = false;
   double smoothing_window = 0; ///< [m]; 0: automatic
@@ -26,8 +29,8 @@ struct TestSection {
   /// The records' paths resolved against the scene's folder; each must exist (InputError naming
   /// the scene and Test/Files). An empty list is returned as such: the items say what they need.
   std::vector<std::string> resolved_files(const std::string& scene_file) const;
-  /// How the records are read: the column map (errors name the scene and Test/Columns) and the
-  /// crack-back tolerance.
+  /// How the records are read: the column map (errors name the scene and Test/Columns), where
+  /// the crack lengths come from and the crack-back tolerance.
   analysis::RecordReadOptions read_options(const std::string& scene_file) const;
 };
 
