@@ -120,3 +120,108 @@ TEST(EquivalentCrackFromBeam, PlateauAgainstGssAndTheZoneLength) {
     EXPECT_NEAR(r.energy.plateau / g_ss, 1, 0.03) << "k " << k;
   }
 }
+
+namespace {
+
+/// Step-wise, lagging crack readings as an operator makes them: a new reading at irregular
+/// intervals (uniform in [1, `max_interval`] s), each the true tip of `lag` seconds earlier (lag
+/// uniform in [0, `max_lag`] s), rounded down to `quantum` (a scale read to the half millimetre),
+/// plus 0.1 mm of noise; held at the running maximum as the reader does. The rows in between
+/// repeat the last reading.
+TestRecord lagging_readings(const TestRecord& truth, unsigned seed, double max_interval,
+                            double max_lag, double quantum) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> interval(1.0, max_interval), lag(0.0, max_lag);
+  std::normal_distribution<double> noise(0.0, 0.1 * mm);
+  TestRecord r = truth;
+  double next = 0, reading = truth.crack_length.front();
+  for (std::size_t i = 0; i < r.time.size(); ++i) {
+    if (r.time[i] >= next) {
+      const double t = r.time[i] - lag(rng);
+      const double a =
+          interpolate_linear(truth.time, truth.crack_length, std::max(t, truth.time.front()));
+      reading = std::max(reading, quantum * std::floor(a / quantum) + noise(rng));
+      next = r.time[i] + interval(rng);
+    }
+    r.crack_length[i] = reading;
+  }
+  return r;
+}
+
+struct Coverage {
+  double inside = 0, n = 0, abs_err = 0, half = 0;
+  void add(double lo, double R, double hi, double truth) {
+    if (!std::isfinite(R))
+      return;
+    inside += lo <= truth && truth <= hi;
+    abs_err += std::abs(R / truth - 1);
+    half += 0.5 * (hi - lo) / truth;
+    ++n;
+  }
+};
+
+} // namespace
+
+// Direct energy on step-wise, lagging readings (issue 31 item 5): the estimate against the
+// readings as read, against the monotone smooth crack, and against the CBBM equivalent crack,
+// each judged by whether its band covers the model's R_energy at the crack length it reports (two-
+// sided windows), over 12 seeds of each of two reading styles. Figures: docs/verification.md.
+TEST(EquivalentCrackFromBeam, DirectEnergyOnStepwiseLaggingReadings) {
+  const auto sim = run(thin_dcb_case::specimen(), thin_dcb_case::bridging());
+  std::vector<double> model_a, model_R;
+  for (const auto& q : sim.rcurve) {
+    model_a.push_back(q.a);
+    model_R.push_back(q.R_energy);
+  }
+  TestSpecimen sp;
+  sp.width = 25 * mm;
+  sp.arm_thickness = 2.7 * mm;
+  struct Style {
+    double max_interval, max_lag, quantum;
+  };
+  for (const Style st : {Style{6, 3, 0.5 * mm}, Style{12, 6, 1 * mm}, Style{30, 15, 2 * mm}}) {
+    Coverage read, mono, eq;
+    for (unsigned seed = 200; seed < 212; ++seed) {
+      const TestRecord truth = true_crack_record(sim, seed);
+      const TestRecord rec = lagging_readings(truth, seed, st.max_interval, st.max_lag, st.quantum);
+      ReduceOptions o = cbbm_options();
+      o.energy_crack = "readings";
+      const auto r = reduce_record(rec, sp, o);
+      o.energy_crack = "monotone";
+      const auto m = reduce_record(rec, sp, o);
+      ASSERT_EQ(r.a.size(), m.a.size());
+      for (std::size_t j = 0; j < r.a.size(); ++j) {
+        if (r.a[j] - r.a0 < r.window / 2 || r.a.back() - r.a[j] < r.window / 2)
+          continue;
+        const double at_a = interpolate_linear(model_a, model_R, r.a[j]);
+        read.add(r.R_energy_lo[j], r.R_energy[j], r.R_energy_hi[j], at_a);
+        mono.add(m.R_energy_lo[j], m.R_energy[j], m.R_energy_hi[j], at_a);
+        // Against a_eq the estimate belongs to a_eq: judged there.
+        const double at_eq = interpolate_linear(model_a, model_R, r.a_eq[j]);
+        eq.add(r.R_energy_eq_lo[j], r.R_energy_eq[j], r.R_energy_eq_hi[j], at_eq);
+      }
+    }
+    auto line = [](const char* what, const Coverage& c) {
+      std::printf("  %-22s covers the model at %5.1f %% of %4.0f readings, mean |error| %4.1f %%, "
+                  "mean half-width %4.1f %%\n",
+                  what, 100 * c.inside / c.n, c.n, 100 * c.abs_err / c.n, 100 * c.half / c.n);
+    };
+    std::printf("readings every 1-%.0f s, lag 0-%.0f s, rounded down to %.1f mm (12 seeds):\n",
+                st.max_interval, st.max_lag, st.quantum / mm);
+    line("as read", read);
+    line("monotone smooth a(t)", mono);
+    line("against a_eq (CBBM)", eq);
+    ASSERT_GT(read.n, 200);
+    // Measured (docs/verification.md): coverage as read 98.8 / 97.5 / 99.6 %, monotone 98.4 /
+    // 97.1 / 99.6 %, against a_eq 46.9 / 24.5 / 74.1 %; mean |error| as read 1.8 / 3.7 / 5.0 %,
+    // monotone 1.7 / 3.3 / 4.4 %, half-width 6.3 / 10.4 / 15.3 % against 6.0 / 8.5 / 13.2 %.
+    // Why monotone is the default: as honest (coverage within the sampling scatter of 12 seeds,
+    // about 2 %, of the as-read band) and closer to the truth with a narrower band; the estimate
+    // against a_eq is off the truth by 7 % where the zone grows (dD/da_eq is not R(a_tip) while
+    // a_eq - a_tip changes) and its band does not see that bias. The bounds: the nominal 95 %, and
+    // the ordering that the choice rests on.
+    EXPECT_GT(mono.inside / mono.n, 0.95);
+    EXPECT_LT(mono.abs_err, read.abs_err);
+    EXPECT_LT(eq.inside / eq.n, mono.inside / mono.n);
+  }
+}

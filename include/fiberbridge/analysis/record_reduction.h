@@ -38,7 +38,7 @@ struct ReduceOptions {
   /// reading, as read) or "monotone" (a from isotonic regression of the readings against time,
   /// smoothed over a few reading intervals; energy_rate.h). docs/design.md section 6 says which
   /// is the default and why.
-  std::string energy_crack = "readings";
+  std::string energy_crack = "monotone";
 };
 
 /// Initiation and plateau of one method's R(a).
