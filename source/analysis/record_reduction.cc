@@ -274,8 +274,8 @@ CbbmBeam calibrate_cbbm(const Setup& s, const ReducedRecord& out, bool measured,
                   (std::isfinite(o.shear_modulus) && o.shear_modulus > 0
                        ? "G13 " + num(o.shear_modulus / 1e9) + " GPa"
                        : std::string("no shear term (no G13 given)")) +
-                  "; the equivalent crack includes the bridging zone's compliance, so it differs "
-                  "from the traction-free crack by part of the zone (docs/design.md section 6)");
+                  "; the equivalent crack includes the bridging zone (on beam records it sits at the tip, the "
+                  "whole zone ahead of the traction-free crack; docs/design.md section 6)");
   return beam;
 }
 
@@ -323,10 +323,10 @@ ReducedRecord reduce_record(const TestRecord& rec, const TestSpecimen& sp, const
                        num(rec.crack_length.front() / units::mm) + " mm on line " +
                        std::to_string(rec.line.front()));
   } else {
-    if (std::isnan(sp.initial_crack))
+    out.a0 = std::isnan(sp.initial_crack) ? o.initial_crack_without_readings : sp.initial_crack;
+    if (!(out.a0 > 0))
       throw InputError(src + ": the record has no crack readings; the equivalent crack needs "
-                             "the initial crack a0 from the Specimen (Specimen/Initial crack)");
-    out.a0 = sp.initial_crack;
+                             "the initial crack a0 (Specimen/Initial crack, --initial-crack)");
   }
 
   // Dissipated energy D = W - U along the whole record (every row: the load and opening are

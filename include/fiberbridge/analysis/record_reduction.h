@@ -32,6 +32,9 @@ struct ReduceOptions {
   double transverse_modulus = NAN;
   /// |Delta| for CBBM [m]; NaN: as above (MBT's, else chi h, else 0 with a note).
   double root_rotation = NAN;
+  /// a0 [m] of a record without crack readings when TestSpecimen::initial_crack is NaN (the
+  /// scene's Specimen/Initial crack, which records with readings replace by their first reading).
+  double initial_crack_without_readings = NAN;
   /// Steps of the equivalent crack at which a record without readings is reduced [m]; NaN: h/10.
   double equivalent_step = NAN;
   /// Direct energy against measured readings: "readings" (D and a at the rows with a fresh
