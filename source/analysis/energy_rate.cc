@@ -175,7 +175,8 @@ std::vector<double> monotone_crack(const TestRecord& rec, const std::vector<std:
                                         t.begin());
       // At least the readings either side (and 3 in all): the line then interpolates where the
       // readings are sparse.
-      const auto at = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), ti) - t.begin());
+      const auto at =
+          static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), ti) - t.begin());
       b = std::min(b, at - 1);
       e = std::max(e, std::min(at + 1, t.size()));
       if (e - b < 3) {

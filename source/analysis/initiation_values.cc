@@ -29,7 +29,8 @@ InitiationPoint point_at(const TestRecord& rec, const InitiationReductions& red,
   p.definition = definition;
   const double d = rec.opening[i] - red.initial.offset;
   if (std::isfinite(red.mbt_delta) && std::isfinite(red.a0))
-    p.G_MBT = 3 * p.load * d / (2 * red.width * (red.a0 + red.mbt_delta)) * f_over_n(red, d, red.a0);
+    p.G_MBT =
+        3 * p.load * d / (2 * red.width * (red.a0 + red.mbt_delta)) * f_over_n(red, d, red.a0);
   if (std::isfinite(red.cbbm.flexural_modulus)) {
     const double C = d / p.load;
     const double ae = std::max(red.cbbm.effective_crack(C), red.a0 + red.cbbm.delta);
@@ -44,8 +45,8 @@ InitiationValues initiation_values(const TestRecord& rec, const InitiationReduct
                                    const InitiationOptions& o) {
   InitiationValues v;
   const std::size_t n = rec.load.size();
-  const std::size_t peak_row =
-      static_cast<std::size_t>(std::max_element(rec.load.begin(), rec.load.end()) - rec.load.begin());
+  const std::size_t peak_row = static_cast<std::size_t>(
+      std::max_element(rec.load.begin(), rec.load.end()) - rec.load.begin());
   const double C0 = red.initial.compliance;
   auto compliance = [&](std::size_t i) {
     return rec.load[i] > 0 ? (rec.opening[i] - red.initial.offset) / rec.load[i] : NAN;

@@ -135,8 +135,8 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
   std::vector<double> spacing;
   for (std::size_t j = 1; j < ar.size(); ++j)
     spacing.push_back(ar[j] - ar[j - 1]);
-  out.window = std::isnan(o.smoothing_window) ? auto_window(median(spacing), s.h)
-                                              : o.smoothing_window;
+  out.window =
+      std::isnan(o.smoothing_window) ? auto_window(median(spacing), s.h) : o.smoothing_window;
   if (!(out.window > 0))
     throw InputError(src + ": the smoothing window must be > 0 mm, got " +
                      num(out.window / units::mm));
@@ -224,8 +224,7 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
       num(out.a0 / units::mm) + " mm; MBT |Delta| " + num(out.mbt_delta / units::mm) +
       " mm, CC n " + num(out.cc_n) + ", MCC A1 " + num(out.mcc_A1) + "; " +
       (o.large_displacement_correction
-           ? "large-displacement corrections F and N applied (l1 " + num(s.l1 / units::mm) +
-                 " mm" +
+           ? "large-displacement corrections F and N applied (l1 " + num(s.l1 / units::mm) + " mm" +
                  (s.blocks ? ", N with end blocks l2 " + num(s.l2 / units::mm) + " mm"
                            : ", N without end blocks (l2 = 0)") +
                  ")"
@@ -255,8 +254,8 @@ CbbmBeam calibrate_cbbm(const Setup& s, const ReducedRecord& out, bool measured,
     for (int it = 0; it < 20; ++it) {
       beam.flexural_modulus = cbbm_flexural_modulus(s.B, s.h, o.shear_modulus, beam.delta, out.a0,
                                                     out.initial_compliance, s.src);
-      beam.delta = corrected_beam_delta(beam.flexural_modulus, o.transverse_modulus,
-                                        o.shear_modulus, s.h);
+      beam.delta =
+          corrected_beam_delta(beam.flexural_modulus, o.transverse_modulus, o.shear_modulus, s.h);
     }
     how = "chi h of corrected beam theory with E11 = E_f, E22 and G13";
   } else {
@@ -266,16 +265,16 @@ CbbmBeam calibrate_cbbm(const Setup& s, const ReducedRecord& out, bool measured,
   }
   beam.flexural_modulus = cbbm_flexural_modulus(s.B, s.h, o.shear_modulus, beam.delta, out.a0,
                                                 out.initial_compliance, s.src);
-  notes.push_back("CBBM (de Moura et al. 2008): initial compliance " +
-                  num(out.initial_compliance * 1e3) + " mm/N (opening at zero load " +
-                  num(out.opening_offset / units::mm) + " mm), E_f " +
-                  num(beam.flexural_modulus / 1e9) + " GPa at a0 + |Delta|, |Delta| " +
-                  num(beam.delta / units::mm) + " mm (" + how + "), " +
-                  (std::isfinite(o.shear_modulus) && o.shear_modulus > 0
-                       ? "G13 " + num(o.shear_modulus / 1e9) + " GPa"
-                       : std::string("no shear term (no G13 given)")) +
-                  "; the equivalent crack includes the bridging zone (on beam records it sits at the tip, the "
-                  "whole zone ahead of the traction-free crack; docs/design.md section 6)");
+  notes.push_back(
+      "CBBM (de Moura et al. 2008): initial compliance " + num(out.initial_compliance * 1e3) +
+      " mm/N (opening at zero load " + num(out.opening_offset / units::mm) + " mm), E_f " +
+      num(beam.flexural_modulus / 1e9) + " GPa at a0 + |Delta|, |Delta| " +
+      num(beam.delta / units::mm) + " mm (" + how + "), " +
+      (std::isfinite(o.shear_modulus) && o.shear_modulus > 0
+           ? "G13 " + num(o.shear_modulus / 1e9) + " GPa"
+           : std::string("no shear term (no G13 given)")) +
+      "; the equivalent crack includes the bridging zone (on beam records it sits at the tip, the "
+      "whole zone ahead of the traction-free crack; docs/design.md section 6)");
   return beam;
 }
 

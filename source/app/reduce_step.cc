@@ -64,11 +64,12 @@ void write_initiation(const ReduceOutcome& r, const std::string& out_dir) {
   for (const auto& x : r.reduced)
     for (const auto& [name, p] : initiation_points(x.initiation))
       if (p->found)
-        w.row({x.name, name}, {static_cast<double>(p->line), p->load, p->opening / mm, p->G_MBT,
-                               p->G_CBBM});
+        w.row({x.name, name},
+              {static_cast<double>(p->line), p->load, p->opening / mm, p->G_MBT, p->G_CBBM});
   for (std::size_t k = 0; k < 3; ++k) {
     int n_mbt = 0, n_cbbm = 0;
-    const double mbt = mean_initiation(r, k, false, n_mbt), cbbm = mean_initiation(r, k, true, n_cbbm);
+    const double mbt = mean_initiation(r, k, false, n_mbt),
+                 cbbm = mean_initiation(r, k, true, n_cbbm);
     if (n_mbt || n_cbbm)
       w.row({"mean", initiation_points(r.reduced.front().initiation)[k].first},
             {NAN, NAN, NAN, mbt, cbbm});
@@ -95,29 +96,22 @@ Json initiation_json(const analysis::InitiationValues& v) {
 
 void write_tables(const ReduceOutcome& r, const std::string& out_dir) {
   const bool root = !r.reduced.front().delta_root.empty();
-  std::vector<std::string> header = {"record",
-                                     "crack",
-                                     "a_mm",
-                                     "da_mm",
-                                     "R_energy_J_m2",
-                                     "R_energy_lo_J_m2",
-                                     "R_energy_hi_J_m2",
-                                     "R_MBT_J_m2",
-                                     "R_CC_J_m2",
-                                     "R_MCC_J_m2",
-                                     "a_eq_mm",
-                                     "R_CBBM_J_m2",
-                                     "R_energy_eq_J_m2",
-                                     "R_energy_eq_lo_J_m2",
-                                     "R_energy_eq_hi_J_m2",
-                                     "R_energy_readings_J_m2"};
+  // The first columns keep their places (plots and readers use them by position); the CBBM
+  // columns follow delta_root's.
+  std::vector<std::string> header = {
+      "record",           "a_mm",       "da_mm",     "R_energy_J_m2", "R_energy_lo_J_m2",
+      "R_energy_hi_J_m2", "R_MBT_J_m2", "R_CC_J_m2", "R_MCC_J_m2"};
   if (root) {
     header.push_back("delta_root_mm");
     header.push_back("R_delta_J_m2");
   }
+  for (const char* c : {"equivalent_crack", "a_eq_mm", "R_CBBM_J_m2", "R_energy_eq_J_m2",
+                        "R_energy_eq_lo_J_m2", "R_energy_eq_hi_J_m2", "R_energy_readings_J_m2"})
+    header.push_back(c);
   CsvWriter w(out_dir + "/rcurve_test.csv", header,
-              {"R(a) per crack reading (crack = measured) or per step of the CBBM equivalent crack "
-               "(crack = equivalent: a = a_eq, no MBT/CC/MCC): direct energy (band +-2 x the "
+              {"R(a) per crack reading, or per step of the CBBM equivalent crack where "
+               "equivalent_crack = 1 (no crack readings: a = a_eq, no MBT/CC/MCC): direct energy "
+               "(band +-2 x the "
                "larger of the local slope's standard error and the scatter of neighbouring "
                "estimates) and ASTM D5528 / ISO 15024 MBT, CC, MCC; CBBM against the equivalent "
                "crack a_eq (from the load line) and direct energy against a_eq beside; "
@@ -128,25 +122,17 @@ void write_tables(const ReduceOutcome& r, const std::string& out_dir) {
   };
   for (const auto& x : r.reduced)
     for (std::size_t i = 0; i < x.a.size(); ++i) {
-      std::vector<double> v = {x.a[i] / mm,
-                               x.da[i] / mm,
-                               x.R_energy[i],
-                               x.R_energy_lo[i],
-                               x.R_energy_hi[i],
-                               x.R_MBT[i],
-                               x.R_CC[i],
-                               x.R_MCC[i],
-                               at(x.a_eq, i, mm),
-                               at(x.R_CBBM, i),
-                               at(x.R_energy_eq, i),
-                               at(x.R_energy_eq_lo, i),
-                               at(x.R_energy_eq_hi, i),
-                               at(x.R_energy_readings, i)};
+      std::vector<double> v = {x.a[i] / mm,      x.da[i] / mm, x.R_energy[i], x.R_energy_lo[i],
+                               x.R_energy_hi[i], x.R_MBT[i],   x.R_CC[i],     x.R_MCC[i]};
       if (root) {
         v.push_back(x.delta_root.empty() ? NAN : x.delta_root[i] / mm);
         v.push_back(x.delta_root.empty() ? NAN : x.R_energy[i]);
       }
-      w.row({x.name, x.crack}, v);
+      for (double y : {x.crack == "equivalent" ? 1.0 : 0.0, at(x.a_eq, i, mm), at(x.R_CBBM, i),
+                       at(x.R_energy_eq, i), at(x.R_energy_eq_lo, i), at(x.R_energy_eq_hi, i),
+                       at(x.R_energy_readings, i)})
+        v.push_back(y);
+      w.row({x.name}, v);
     }
   w.close();
   write_initiation(r, out_dir);
@@ -211,6 +197,9 @@ void plot(const ReduceOutcome& r, const std::string& out_dir, Json& summary) {
     summary["plots"].push_back("reduce_load_opening.png");
   if (run_gnuplot(out_dir, a + "\n"))
     summary["plots"].push_back("reduce_crack_opening.png");
+  // R_CBBM's column in rcurve_test.csv (write_tables): after the 9 fixed ones, delta_root's two
+  // when measured, equivalent_crack and a_eq_mm.
+  const int cbbm_column = 9 + (r.reduced.front().delta_root.empty() ? 0 : 2) + 3;
   for (const auto& x : r.reduced) {
     const std::string png = "reduce_R_" + x.name + ".png";
     std::string s = gnuplot_png_preamble(png);
@@ -222,7 +211,8 @@ void plot(const ReduceOutcome& r, const std::string& out_dir, Json& summary) {
          "filledcurves fs transparent solid 0.3 lc 1 title 'direct energy band', "
          "'' using 2:(sel(4)) with lines lw 2 lc 1 title 'direct energy', '' using 2:(sel(7)) "
          "with lines lw 2 lc 2 title 'MBT', '' using 2:(sel(8)) with lines lc 3 title 'CC', '' "
-         "using 2:(sel(9)) with lines lc 4 dt 2 title 'MCC'\n";
+         "using 2:(sel(9)) with lines lc 4 dt 2 title 'MCC', '' using 2:(sel(" +
+         std::to_string(cbbm_column) + ")) with lines lc 5 dt 3 title 'CBBM'\n";
     if (run_gnuplot(out_dir, s))
       summary["plots"].push_back(png);
   }
@@ -266,23 +256,23 @@ ReduceOutcome run_reduce(const ReduceStepOptions& o, const std::string& out_dir,
       "initiation: ASTM D5528 NL, 5%/max and VIS (initiation_test.csv)";
   block["records"] = Json::array();
   for (const auto& x : r.reduced) {
-    Json j = {{"name", x.name},
-              {"source", x.source},
-              {"a0_mm", x.a0 / mm},
-              {"readings", x.a.size()},
-              {"crack_extension_mm", x.da.back() / mm},
-              {"smoothing_window_mm", x.window / mm},
-              {"MBT_Delta_mm", x.mbt_delta / mm},
-              {"CC_n", x.cc_n},
-              {"MCC_A1", x.mcc_A1},
-              {"max_opening_over_a", x.max_opening_over_a},
-              {"delta_root_measured", !x.delta_root.empty()},
-              {"crack", x.crack},
-              {"CBBM_flexural_modulus_GPa", json_number(x.flexural_modulus / 1e9)},
-              {"CBBM_Delta_mm", json_number(x.cbbm_delta / mm)},
-              {"initial_compliance_mm_N", json_number(x.initial_compliance / mm)},
-              {"final_equivalent_crack_mm",
-               json_number(x.a_eq.empty() ? NAN : x.a_eq.back() / mm)}};
+    Json j = {
+        {"name", x.name},
+        {"source", x.source},
+        {"a0_mm", x.a0 / mm},
+        {"readings", x.a.size()},
+        {"crack_extension_mm", x.da.back() / mm},
+        {"smoothing_window_mm", x.window / mm},
+        {"MBT_Delta_mm", x.mbt_delta / mm},
+        {"CC_n", x.cc_n},
+        {"MCC_A1", x.mcc_A1},
+        {"max_opening_over_a", x.max_opening_over_a},
+        {"delta_root_measured", !x.delta_root.empty()},
+        {"crack", x.crack},
+        {"CBBM_flexural_modulus_GPa", json_number(x.flexural_modulus / 1e9)},
+        {"CBBM_Delta_mm", json_number(x.cbbm_delta / mm)},
+        {"initial_compliance_mm_N", json_number(x.initial_compliance / mm)},
+        {"final_equivalent_crack_mm", json_number(x.a_eq.empty() ? NAN : x.a_eq.back() / mm)}};
     j.update(methods_json(x.energy, x.mbt, x.cc, x.mcc, x.cbbm));
     j["energy_vs_equivalent_crack"] = method_json(x.energy_eq);
     j["initiation"] = initiation_json(x.initiation);
@@ -294,7 +284,8 @@ ReduceOutcome run_reduce(const ReduceStepOptions& o, const std::string& out_dir,
   mean.update(methods_json(r.mean.energy, r.mean.mbt, r.mean.cc, r.mean.mcc, r.mean.cbbm));
   for (std::size_t k = 0; k < 3; ++k) {
     int n_mbt = 0, n_cbbm = 0;
-    const double mbt = mean_initiation(r, k, false, n_mbt), cbbm = mean_initiation(r, k, true, n_cbbm);
+    const double mbt = mean_initiation(r, k, false, n_mbt),
+                 cbbm = mean_initiation(r, k, true, n_cbbm);
     mean["initiation"][initiation_points(r.reduced.front().initiation)[k].first] = {
         {"G_MBT_J_m2", json_number(mbt)},
         {"G_CBBM_J_m2", json_number(cbbm)},

@@ -180,9 +180,8 @@ std::vector<double> crack_estimate(const analysis::TestRecord& rec, const Prepar
   double running = a0;
   for (std::size_t i = 0; i < rec.load.size(); ++i) {
     if (rec.load[i] > 0.05 * pr.peak_load && rec.opening[i] > 0)
-      running = std::max(running, (a0 + chi_h) * std::cbrt(rec.opening[i] / rec.load[i] /
-                                                           pr.compliance) -
-                                      chi_h);
+      running = std::max(
+          running, (a0 + chi_h) * std::cbrt(rec.opening[i] / rec.load[i] / pr.compliance) - chi_h);
     a[i] = running;
   }
   return a;

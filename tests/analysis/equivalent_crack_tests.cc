@@ -87,7 +87,8 @@ TEST(EquivalentCrack, CardanoInvertsTheComplianceAndGIsItsDerivative) {
     for (double ae : {10 * mm, 38 * mm, 120 * mm}) {
       EXPECT_NEAR(b.effective_crack(b.compliance(ae)) / ae, 1, 1e-12);
       const double h = 1e-6, P = 80;
-      const double G = P * P / (2 * b.width) * (b.compliance(ae + h) - b.compliance(ae - h)) / (2 * h);
+      const double G =
+          P * P / (2 * b.width) * (b.compliance(ae + h) - b.compliance(ae - h)) / (2 * h);
       EXPECT_NEAR(b.energy_release_rate(P, ae) / G, 1, 1e-7);
     }
   }
@@ -153,9 +154,8 @@ TEST(EquivalentCrack, InitiationValuesOfAConstantGcRecord) {
   EXPECT_LE(v.nl.row, 203u);
   std::printf("MBT |Delta| %.3f mm, chi h %.3f mm; G_CBBM/Gc at NL %.4f, 5 %%/max %.4f, VIS "
               "%.4f; G_MBT/Gc %.4f %.4f %.4f\n",
-              r.mbt_delta / mm, true_beam().delta / mm, v.nl.G_CBBM / Gc,
-              v.offset5_max.G_CBBM / Gc, v.vis.G_CBBM / Gc, v.nl.G_MBT / Gc,
-              v.offset5_max.G_MBT / Gc, v.vis.G_MBT / Gc);
+              r.mbt_delta / mm, true_beam().delta / mm, v.nl.G_CBBM / Gc, v.offset5_max.G_CBBM / Gc,
+              v.vis.G_CBBM / Gc, v.nl.G_MBT / Gc, v.offset5_max.G_MBT / Gc, v.vis.G_MBT / Gc);
   for (const auto* p : {&v.nl, &v.offset5_max, &v.vis}) {
     EXPECT_NEAR(p->G_CBBM / Gc, 1, 0.01) << p->definition;
     EXPECT_NEAR(p->G_MBT / Gc, 1, 0.03) << p->definition;

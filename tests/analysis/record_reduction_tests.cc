@@ -334,13 +334,12 @@ TEST(RecordReduction, SharedRecordsWithoutTheCrackColumn) {
                 100 * (chi.cbbm.plateau / with.mbt.plateau - 1), chi.cbbm_delta / mm,
                 eq.energy.plateau, 100 * (eq.energy.plateau / with.mbt.plateau - 1),
                 eq.a.back() / mm, chi.a.back() / mm, with.a.back() / mm, with.cbbm.plateau);
-    std::printf("   initiation NL / 5 %%-max / VIS: MBT %.0f / %.0f / %.0f, CBBM %.0f / %.0f / %.0f "
-                "J/m^2 (lines %zu / %zu / %zu)\n",
-                with.initiation.nl.G_MBT, with.initiation.offset5_max.G_MBT,
-                with.initiation.vis.G_MBT, with.initiation.nl.G_CBBM,
-                with.initiation.offset5_max.G_CBBM, with.initiation.vis.G_CBBM,
-                with.initiation.nl.line, with.initiation.offset5_max.line,
-                with.initiation.vis.line);
+    std::printf(
+        "   initiation NL / 5 %%-max / VIS: MBT %.0f / %.0f / %.0f, CBBM %.0f / %.0f / %.0f "
+        "J/m^2 (lines %zu / %zu / %zu)\n",
+        with.initiation.nl.G_MBT, with.initiation.offset5_max.G_MBT, with.initiation.vis.G_MBT,
+        with.initiation.nl.G_CBBM, with.initiation.offset5_max.G_CBBM, with.initiation.vis.G_CBBM,
+        with.initiation.nl.line, with.initiation.offset5_max.line, with.initiation.vis.line);
     EXPECT_NEAR(eq.cbbm.plateau / with.mbt.plateau, 1, 0.08) << name;
   }
 }

@@ -404,7 +404,8 @@ TEST(AppReduce, SharedRecordsScene) {
   while (std::getline(csv, line) && line[0] == '#') {
   }
   EXPECT_EQ(line, "record,a_mm,da_mm,R_energy_J_m2,R_energy_lo_J_m2,R_energy_hi_J_m2,R_MBT_J_m2,"
-                  "R_CC_J_m2,R_MCC_J_m2");
+                  "R_CC_J_m2,R_MCC_J_m2,equivalent_crack,a_eq_mm,R_CBBM_J_m2,R_energy_eq_J_m2,"
+                  "R_energy_eq_lo_J_m2,R_energy_eq_hi_J_m2,R_energy_readings_J_m2");
   const Json s = read_json(out / "summary.json");
   const Json& b = s.at("reduce");
   ASSERT_EQ(b.at("records").size(), 4u);

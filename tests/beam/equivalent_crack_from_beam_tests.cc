@@ -38,9 +38,8 @@ result::SimulationResult run(const specimen::Specimen& s, const law::TrilinearPa
   beam::BeamParameters bp;
   bp.n_elements = 300;
   bp.steady_state_window = 1.0; // to the end of the ligament
-  return thin_dcb_case::rising_part(beam::simulate_dcb(s, thin_dcb_case::material(),
-                                                       law::make_trilinear(p),
-                                                       thin_dcb_case::j_tip, bp));
+  return thin_dcb_case::rising_part(beam::simulate_dcb(
+      s, thin_dcb_case::material(), law::make_trilinear(p), thin_dcb_case::j_tip, bp));
 }
 
 /// A record whose crack column is the true tip at every row (no reading noise to speak of).
@@ -101,9 +100,8 @@ TEST(EquivalentCrackFromBeam, PlateauAgainstGssAndTheZoneLength) {
                 "|Delta| %.2f mm\n",
                 k, zone_end / mm, tip_end / mm, g_ss, r.cbbm.plateau,
                 100 * (r.cbbm.plateau / g_ss - 1), r.energy.plateau,
-                100 * (r.energy.plateau / g_ss - 1), sim.rcurve.back().R_energy,
-                behind_tip / mm, behind_tip / zone_end, r.flexural_modulus / 1e9,
-                r.cbbm_delta / mm);
+                100 * (r.energy.plateau / g_ss - 1), sim.rcurve.back().R_energy, behind_tip / mm,
+                behind_tip / zone_end, r.flexural_modulus / 1e9, r.cbbm_delta / mm);
     // a_eq sits at the tip, not at the traction-free crack: it includes the whole zone
     // (measured: -0.04, 0.00, +0.04 of the zone behind the tip for k = 0.5, 1, 2; the tip-side
     // spread of about 1 mm at a = 290 mm is CBBM's Timoshenko compliance against the model's

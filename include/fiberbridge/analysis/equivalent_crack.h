@@ -33,8 +33,8 @@ struct CbbmBeam {
 /// E_f from the initial compliance C0 at a0 + |Delta| (CBBM): the flexural modulus for which
 /// CbbmBeam::compliance(a0 + |Delta|) = C0. Throws InputError naming `where` when the shear term
 /// alone exceeds C0 (G13 too small for this specimen's compliance).
-double cbbm_flexural_modulus(double width, double arm_thickness, double shear_modulus,
-                             double delta, double a0, double c0, const std::string& where);
+double cbbm_flexural_modulus(double width, double arm_thickness, double shear_modulus, double delta,
+                             double a0, double c0, const std::string& where);
 
 /// |Delta| = chi h of corrected beam theory (Hashemi, Kinloch, Williams 1990; the formula of
 /// specimen::cbt_chi, which analysis cannot link): chi = sqrt(E11/(11 G13) (3 - 2 (G/(1+G))^2)),

@@ -15,13 +15,13 @@ namespace fiberbridge::analysis {
 /// One initiation point.
 struct InitiationPoint {
   bool found = false;
-  std::size_t row = 0;     ///< row of the record
-  std::size_t line = 0;    ///< source line
-  double load = NAN;       ///< [N]
-  double opening = NAN;    ///< [m]
-  double G_MBT = NAN;      ///< MBT at a0 (ASTM D5528 uses a0 for initiation) [J/m^2]
-  double G_CBBM = NAN;     ///< CBBM at the row's equivalent crack [J/m^2]
-  std::string definition;  ///< e.g. "5 % compliance offset" or "maximum load"
+  std::size_t row = 0;    ///< row of the record
+  std::size_t line = 0;   ///< source line
+  double load = NAN;      ///< [N]
+  double opening = NAN;   ///< [m]
+  double G_MBT = NAN;     ///< MBT at a0 (ASTM D5528 uses a0 for initiation) [J/m^2]
+  double G_CBBM = NAN;    ///< CBBM at the row's equivalent crack [J/m^2]
+  std::string definition; ///< e.g. "5 % compliance offset" or "maximum load"
 };
 
 struct InitiationValues {

@@ -75,9 +75,9 @@ struct ReducedRecord {
   double initial_compliance = NAN;       ///< C0 [m/N]
   double opening_offset = NAN;           ///< opening at zero load of the initial line [m]
   InitiationValues initiation;
-  double a0 = NAN;                                        ///< [m]
-  double window = NAN;                                    ///< smoothing window used [m]
-  double mbt_delta = NAN;                                 ///< |Delta| of MBT [m]
+  double a0 = NAN;                 ///< [m]
+  double window = NAN;             ///< smoothing window used [m]
+  double mbt_delta = NAN;          ///< |Delta| of MBT [m]
   double cc_n = NAN;               ///< CC exponent n (slope of log C against log a)
   double mcc_A1 = NAN;             ///< MCC slope A1 of a/(2h) against C^(1/3) [N^(1/3) m^(-1/3)]
   double max_opening_over_a = NAN; ///< largest delta/a over the readings (F matters above ~0.4)
@@ -121,7 +121,8 @@ struct ReducedMean {
   std::vector<double> R_energy, R_energy_std, R_MBT, R_MBT_std, R_CC, R_CC_std, R_MCC, R_MCC_std;
   std::vector<double> R_CBBM, R_CBBM_std; ///< against each record's own abscissa (a or a_eq)
   int n_records = 0;
-  MethodSummary energy, mbt, cc, mcc, cbbm; ///< of the mean curves (initiation: first grid point > 0)
+  MethodSummary energy, mbt, cc, mcc,
+      cbbm; ///< of the mean curves (initiation: first grid point > 0)
   double plateau_fraction = 1.0 / 3.0;
 };
 
