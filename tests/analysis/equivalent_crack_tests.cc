@@ -176,3 +176,39 @@ TEST(EnergyRate, IsotonicRegression) {
   for (std::size_t i = 0; i < z.size(); ++i)
     EXPECT_NEAR(z[i], expect[i], 1e-12);
 }
+
+// The monotone smooth crack of step-wise readings: a crack growing at 0.047 mm/s read every 5 s
+// and rounded down to 1 mm (a reading changes only when the crack passes a millimetre mark, so a
+// fresh reading is within one reading interval, 0.24 mm, of the truth). The smooth a(t) must not
+// decrease and must stay within 0.5 mm of the truth between the first and last fresh readings
+// (the interval's 0.24 mm plus the line's sag over 4 intervals of a straight truth, none;
+// measured 0.18 mm),
+// where the raw stair is off by up to 1 mm.
+TEST(EnergyRate, MonotoneCrackFollowsSteppedReadings) {
+  TestRecord r;
+  for (int i = 0; i <= 4000; ++i) {
+    const double t = 0.1 * i;
+    r.time.push_back(t);
+    r.load.push_back(1);
+    r.opening.push_back(t);
+    const double step = std::floor(t / 5) * 5; // the last reading time
+    r.crack_length.push_back(std::floor((35 * mm + 0.047 * mm * step) / mm + 1e-9) * mm);
+    r.line.push_back(i + 2);
+  }
+  std::vector<std::size_t> readings = {0};
+  for (std::size_t i = 1; i < r.time.size(); ++i)
+    if (r.crack_length[i] != r.crack_length[i - 1])
+      readings.push_back(i);
+  ASSERT_GT(readings.size(), 15u);
+  const auto a = monotone_crack(r, readings, 4 * 20.0);
+  double worst = 0, worst_raw = 0;
+  for (std::size_t i = readings[1]; i < readings.back(); ++i) {
+    ASSERT_GE(a[i], a[i - 1]);
+    const double truth = 35 * mm + 0.047 * mm * r.time[i];
+    worst = std::max(worst, std::abs(a[i] - truth));
+    worst_raw = std::max(worst_raw, std::abs(r.crack_length[i] - truth));
+  }
+  std::printf("stepped readings: raw stair off by up to %.2f mm, monotone a(t) by %.2f mm\n",
+              worst_raw / mm, worst / mm);
+  EXPECT_LT(worst, 0.5 * mm);
+}
