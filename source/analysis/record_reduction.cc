@@ -111,7 +111,11 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
   const ReduceOptions& o = *s.o;
   const std::string& src = s.src;
   // The rows with a fresh crack reading; the first is the notch (a0).
-  const auto readings = crack_reading_rows(rec);
+  auto readings = crack_reading_rows(rec);
+  // Rows without a reading are NaN (test_record.h): never a reading, whichever reader made them.
+  readings.erase(std::remove_if(readings.begin(), readings.end(),
+                                [&](std::size_t k) { return !std::isfinite(rec.crack_length[k]); }),
+                 readings.end());
   std::vector<double> ar, Dr;
   for (std::size_t k : readings) {
     ar.push_back(rec.crack_length[k]);
@@ -311,16 +315,22 @@ ReducedRecord reduce_record(const TestRecord& rec, const TestSpecimen& sp, const
   out.name = rec.name;
   out.source = rec.source;
   out.cleaning = rec.cleaning;
-  const bool has_readings = !rec.crack_length.empty();
+  // Rows without a reading are NaN; a record with none is reduced as one without the column.
+  const bool has_readings = std::any_of(rec.crack_length.begin(), rec.crack_length.end(),
+                                        [](double a) { return std::isfinite(a); });
   const bool measured = has_readings && !o.use_equivalent_crack;
   out.crack = measured ? "measured" : "equivalent";
   if (has_readings) {
-    out.a0 = std::isnan(sp.initial_crack) ? rec.crack_length.front() : sp.initial_crack;
-    if (out.a0 > rec.crack_length.front() + 1e-9)
+    // The first row with a reading (rows without one are NaN, test_record.h).
+    std::size_t first = 0;
+    while (first < rec.crack_length.size() && !std::isfinite(rec.crack_length[first]))
+      ++first;
+    const double a_first = rec.crack_length[first];
+    out.a0 = std::isnan(sp.initial_crack) ? a_first : sp.initial_crack;
+    if (out.a0 > a_first + 1e-9)
       throw InputError(src + ": Specimen/Initial crack " + num(out.a0 / units::mm) +
-                       " mm lies beyond the first crack reading " +
-                       num(rec.crack_length.front() / units::mm) + " mm on line " +
-                       std::to_string(rec.line.front()));
+                       " mm lies beyond the first crack reading " + num(a_first / units::mm) +
+                       " mm on line " + std::to_string(rec.line[first]));
   } else {
     out.a0 = std::isnan(sp.initial_crack) ? o.initial_crack_without_readings : sp.initial_crack;
     if (!(out.a0 > 0))

@@ -170,10 +170,24 @@ struct PreparedRecord {
   std::vector<double> crack_estimate;
 };
 
+/// The first crack reading of a record (rows without one are NaN; NaN when it has none).
+double first_reading(const analysis::TestRecord& rec) {
+  for (double a : rec.crack_length)
+    if (std::isfinite(a))
+      return a;
+  return NAN;
+}
+
 /// PreparedRecord::crack_estimate.
 std::vector<double> crack_estimate(const analysis::TestRecord& rec, const PreparedRecord& pr) {
-  if (!rec.crack_length.empty())
-    return rec.crack_length;
+  if (std::isfinite(first_reading(rec))) {
+    // Rows without a reading (NaN, as the reader leaves them) hold the last reading.
+    std::vector<double> a = rec.crack_length;
+    double last = pr.specimen.initial_crack;
+    for (double& v : a)
+      v = std::isfinite(v) ? (last = v) : last;
+    return a;
+  }
   const double a0 = pr.specimen.initial_crack;
   const double chi_h = specimen::cbt_chi(pr.material) * pr.specimen.arm_thickness();
   std::vector<double> a(rec.load.size(), a0);
@@ -465,12 +479,14 @@ double initial_compliance(const analysis::TestRecord& rec, const IdentifySetting
   // Before initiation: up to the first reading beyond a0 by more than three times the reading
   // scatter (a noisy tracker changes its reading before the crack grows).
   std::size_t end = 0;
-  if (rec.crack_length.empty()) // no readings: the rows before the load first passes the window
+  if (!std::isfinite(
+          first_reading(rec))) // no readings: the rows before the load first passes the window
     while (end < rec.load.size() && rec.load[end] <= s.compliance_high * peak)
       ++end;
   else
+    // A row without a reading (NaN) counts as before the growth.
     while (end < rec.load.size() &&
-           rec.crack_length[end] - rec.crack_length.front() <= 3 * s.crack_scatter)
+           !(rec.crack_length[end] - first_reading(rec) > 3 * s.crack_scatter))
       ++end;
   double n = 0, sp = 0, sd = 0, spp = 0, spd = 0;
   for (std::size_t i = 0; i < end; ++i)
@@ -576,14 +592,19 @@ Identification identify_law(const std::vector<analysis::TestRecord>& records,
     pr.specimen = specimen;
     // Without crack readings (load and opening alone) a0 is the specimen's.
     if (!rec.crack_length.empty())
-      pr.specimen.initial_crack = rec.crack_length.front();
+      if (std::isfinite(first_reading(rec)))
+        pr.specimen.initial_crack = first_reading(rec);
     pr.specimen.validate("Specimen (record " + rec.name + ")");
     pr.material = quoted;
     pr.peak_load = *std::max_element(rec.load.begin(), rec.load.end());
     pr.compliance = initial_compliance(rec, settings);
     if (settings.calibrate_modulus)
       pr.material.E_L = modulus_for_compliance(pr.specimen, quoted, pr.compliance);
-    const auto rows = analysis::crack_reading_rows(rec);
+    auto rows = analysis::crack_reading_rows(rec);
+    // Rows without a reading are NaN (test_record.h): never a reading.
+    rows.erase(std::remove_if(rows.begin(), rows.end(),
+                              [&](std::size_t k) { return !std::isfinite(rec.crack_length[k]); }),
+               rows.end());
     if (!rows.empty())
       pr.crack_rows.assign(rows.begin() + 1, rows.end());
     pr.crack_estimate = crack_estimate(rec, pr);

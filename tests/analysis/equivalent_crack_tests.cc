@@ -212,3 +212,34 @@ TEST(EnergyRate, MonotoneCrackFollowsSteppedReadings) {
               worst_raw / mm, worst / mm);
   EXPECT_LT(worst, 0.5 * mm);
 }
+
+// Rows without a crack reading are NaN (test_record.h): a trailing block of them (tracking lost)
+// leaves the readings before it reduced as without the block, and the load and opening of the
+// block still give CBBM its rows; a crack column of NaN only is a record without readings.
+TEST(EquivalentCrack, RowsWithoutReadingsAreNaN) {
+  const auto full = constant_gc_record(true);
+  TestRecord lost = full;
+  const std::size_t from = lost.crack_length.size() - 300;
+  for (std::size_t i = from; i < lost.crack_length.size(); ++i)
+    lost.crack_length[i] = NAN;
+  TestRecord cut = full;
+  for (auto* v : {&cut.time, &cut.load, &cut.opening, &cut.crack_length})
+    v->resize(from);
+  cut.line.resize(from);
+  const auto r = reduce_record(lost, specimen(), linear_options());
+  const auto c = reduce_record(cut, specimen(), linear_options());
+  ASSERT_EQ(r.a.size(), c.a.size());
+  for (std::size_t j = 0; j < r.a.size(); ++j) {
+    EXPECT_EQ(r.a[j], c.a[j]);
+    // Same rows, same D: the same MBT and CBBM; the energy slopes see the same points.
+    EXPECT_DOUBLE_EQ(r.R_MBT[j], c.R_MBT[j]);
+    EXPECT_DOUBLE_EQ(r.R_energy[j], c.R_energy[j]);
+  }
+  TestRecord none = full;
+  for (double& a : none.crack_length)
+    a = NAN;
+  const auto e = reduce_record(none, specimen(), linear_options());
+  EXPECT_EQ(e.crack, "equivalent");
+  EXPECT_FALSE(e.initiation.vis.found);
+  EXPECT_NEAR(e.cbbm.plateau / Gc, 1, 1e-3);
+}
