@@ -278,7 +278,7 @@ CbbmBeam calibrate_cbbm(const Setup& s, const ReducedRecord& out, bool measured,
            ? "G13 " + num(o.shear_modulus / 1e9) + " GPa"
            : std::string("no shear term (no G13 given)")) +
       "; the equivalent crack includes the bridging zone (on beam records it sits at the tip, the "
-      "whole zone ahead of the traction-free crack; docs/design.md section 6)");
+      "most of the zone ahead of the traction-free crack; docs/design.md section 6)");
   return beam;
 }
 
