@@ -277,8 +277,9 @@ CbbmBeam calibrate_cbbm(const Setup& s, const ReducedRecord& out, bool measured,
       (std::isfinite(o.shear_modulus) && o.shear_modulus > 0
            ? "G13 " + num(o.shear_modulus / 1e9) + " GPa"
            : std::string("no shear term (no G13 given)")) +
-      "; the equivalent crack includes the bridging zone (on beam records it sits at the tip, the "
-      "most of the zone ahead of the traction-free crack; docs/design.md section 6)");
+      "; the equivalent crack includes most of the bridging zone (on FEM records it sits a "
+      "tenth of the zone behind the tip, far ahead of the traction-free crack; docs/design.md "
+      "section 6)");
   return beam;
 }
 
