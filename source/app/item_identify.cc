@@ -404,7 +404,9 @@ void check_identified_against_simulations(SceneContext& ctx) {
     std::size_t n = 0;
     for (std::size_t i = 0; i < load.size() && rec.opening[i] <= reached; ++i, ++n) {
       sum += std::pow(load[i] - rec.load[i], 2);
-      w.row({rec.opening[i] / mm, rec.load[i], load[i], rec.crack_length[i] / mm, a[i] / mm});
+      // A record without crack readings (issue 31) has an empty crack_length.
+      const double a_read = i < rec.crack_length.size() ? rec.crack_length[i] / mm : NAN;
+      w.row({rec.opening[i] / mm, rec.load[i], load[i], a_read, a[i] / mm});
     }
     w.close();
     block[name] = {{"record", rec.name},

@@ -228,7 +228,9 @@ public:
         f.peak_load = pr.peak_load;
         f.opening = rec.opening;
         f.load = rec.load;
-        f.crack_length = rec.crack_length;
+        // NaN on every row without readings, so that writers can index it as the other columns.
+        f.crack_length = rec.crack_length.empty() ? std::vector<double>(rec.opening.size(), NAN)
+                                                  : rec.crack_length;
         f.model_load = model_load;
         f.model_crack_length = model_a;
         f.min_F = min_F;
