@@ -2,6 +2,7 @@
 // reductions (record_reduction.h; docs/design.md, "Test records").
 #include "fiberbridge/analysis/record_reduction.h"
 
+#include "fiberbridge/analysis/energy_rate.h"
 #include "fiberbridge/analysis/line_fit.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
@@ -25,9 +26,6 @@ namespace {
 constexpr double readings_per_window = 10;
 constexpr double arm_thicknesses_per_window = 4;
 constexpr std::size_t min_readings = 5;
-/// The band's scatter of neighbouring estimates is taken over this many windows (centred).
-constexpr double scatter_windows = 4;
-
 std::string num(double v) {
   std::ostringstream s;
   s << v;
@@ -40,49 +38,6 @@ double median(std::vector<double> v) {
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
   return v[v.size() / 2];
 }
-
-/// Local straight lines of y against x over windows [begin, end) in O(1) each: prefix sums of
-/// the samples taken about their overall means, so that window sums far from the origin keep
-/// their digits (the dissipated energy grows to a few joules while its noise is ~1e-4 J).
-class WindowLines {
-public:
-  WindowLines(const std::vector<double>& x, const std::vector<double>& y) {
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      x0_ += x[i] / static_cast<double>(x.size());
-      y0_ += y[i] / static_cast<double>(y.size());
-    }
-    sx_.assign(x.size() + 1, 0.0);
-    sy_ = sxx_ = sxy_ = syy_ = sx_;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      const double u = x[i] - x0_, v = y[i] - y0_;
-      sx_[i + 1] = sx_[i] + u;
-      sy_[i + 1] = sy_[i] + v;
-      sxx_[i + 1] = sxx_[i] + u * u;
-      sxy_[i + 1] = sxy_[i] + u * v;
-      syy_[i + 1] = syy_[i] + v * v;
-    }
-  }
-  /// Slope over [b, e) and its standard error from the residuals; NaN below 3 points or with
-  /// no spread in x.
-  std::pair<double, double> slope(std::size_t b, std::size_t e) const {
-    const double n = static_cast<double>(e - b);
-    if (e - b < 3)
-      return {NAN, NAN};
-    const double mx = (sx_[e] - sx_[b]) / n, my = (sy_[e] - sy_[b]) / n;
-    const double Sxx = sxx_[e] - sxx_[b] - n * mx * mx;
-    const double Sxy = sxy_[e] - sxy_[b] - n * mx * my;
-    const double Syy = syy_[e] - syy_[b] - n * my * my;
-    if (!(Sxx > 0))
-      return {NAN, NAN};
-    const double k = Sxy / Sxx;
-    const double ss = std::max(0.0, Syy - k * Sxy);
-    return {k, std::sqrt(ss / (n - 2) / Sxx)};
-  }
-
-private:
-  double x0_ = 0, y0_ = 0;
-  std::vector<double> sx_, sy_, sxx_, sxy_, syy_;
-};
 
 /// Initiation (first value) and plateau (mean and std over da >= (1 - fraction) da_max).
 MethodSummary summarize(const std::vector<double>& da, const std::vector<double>& R,
@@ -114,37 +69,53 @@ MethodSummary summarize(const std::vector<double>& da, const std::vector<double>
 
 } // namespace
 
-ReducedRecord reduce_record(const TestRecord& rec, const TestSpecimen& sp, const ReduceOptions& o) {
-  const std::string src = rec.source + " (record '" + rec.name + "')";
-  sp.check(src);
-  const double B = sp.width, h = sp.arm_thickness;
-  const double l1 = std::isnan(sp.pin_to_arm_midplane) ? h / 2 : sp.pin_to_arm_midplane;
-  const bool blocks = !std::isnan(sp.pin_to_block_edge);
-  const double l2 = blocks ? sp.pin_to_block_edge : 0.0;
+namespace {
 
-  ReducedRecord out;
-  out.name = rec.name;
-  out.source = rec.source;
-  out.cleaning = rec.cleaning;
-  out.a0 = std::isnan(sp.initial_crack) ? rec.crack_length.front() : sp.initial_crack;
-  if (out.a0 > rec.crack_length.front() + 1e-9)
-    throw InputError(src + ": Specimen/Initial crack " + num(out.a0 / units::mm) +
-                     " mm lies beyond the first crack reading " +
-                     num(rec.crack_length.front() / units::mm) + " mm on line " +
-                     std::to_string(rec.line.front()));
-
-  // Dissipated energy D = W - U along the whole record (every row: the load and opening are
-  // good on rows that repeat a stale crack reading).
-  const std::size_t n = rec.opening.size();
-  std::vector<double> D(n, 0.0);
-  double W = 0;
-  for (std::size_t i = 1; i < n; ++i) {
-    W += 0.5 * (rec.load[i] + rec.load[i - 1]) * (rec.opening[i] - rec.opening[i - 1]);
-    D[i] = W - 0.5 * rec.load[i] * rec.opening[i];
+/// Ingredients every part of one record's reduction shares.
+struct Setup {
+  std::string src;
+  double B = 0, h = 0, l1 = 0, l2 = 0;
+  bool blocks = false;
+  const ReduceOptions* o = nullptr;
+  /// ISO 15024's F and N (record_reduction.h).
+  double F(double d, double a) const {
+    return o->large_displacement_correction ? 1 - 0.3 * (d / a) * (d / a) - 1.5 * (d * l1 / (a * a))
+                                            : 1.0;
   }
+  // N is not only the end-block correction: its last term, -9/35 (delta/a)^2, is the
+  // arms' own geometric stiffening (the load-line opening of an elastica falls behind the linear
+  // cantilever's), so it applies with hinges too (l2 = 0). F alone overcorrects: F/N, not F, is
+  // the ratio of the exact G of the elastica to 3 P delta / (2 B a) (to 0.05 % at delta/a = 0.5,
+  // RecordReduction.ElasticaDcbIsReducedExactlyWithFOverN).
+  double N(double d, double a) const {
+    if (!o->large_displacement_correction)
+      return 1.0;
+    const double r = l2 / a;
+    return 1 - r * r * r - 9.0 / 8.0 * (1 - r * r) * d * l1 / (a * a) -
+           9.0 / 35.0 * (d / a) * (d / a);
+  }
+};
 
+/// Automatic window of the energy slopes for reading spacing `spacing`.
+double auto_window(double spacing, double h) {
+  return std::max(readings_per_window * spacing, arm_thicknesses_per_window * h);
+}
+
+/// Times between fresh readings over which monotone_crack fits its local lines: the readings
+/// either side of a stall and of the jump that ends it (energy_rate.h; docs/design.md section 6).
+constexpr double monotone_reading_intervals = 4;
+
+/// The beam-theory reductions and direct energy against the measured crack readings.
+void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const Setup& s,
+                     ReducedRecord& out) {
+  const ReduceOptions& o = *s.o;
+  const std::string& src = s.src;
   // The rows with a fresh crack reading; the first is the notch (a0).
-  const auto readings = crack_reading_rows(rec);
+  auto readings = crack_reading_rows(rec);
+  // Rows without a reading are NaN (test_record.h): never a reading, whichever reader made them.
+  readings.erase(std::remove_if(readings.begin(), readings.end(),
+                                [&](std::size_t k) { return !std::isfinite(rec.crack_length[k]); }),
+                 readings.end());
   std::vector<double> ar, Dr;
   for (std::size_t k : readings) {
     ar.push_back(rec.crack_length[k]);
@@ -168,41 +139,22 @@ ReducedRecord reduce_record(const TestRecord& rec, const TestSpecimen& sp, const
   std::vector<double> spacing;
   for (std::size_t j = 1; j < ar.size(); ++j)
     spacing.push_back(ar[j] - ar[j - 1]);
-  out.window = std::isnan(o.smoothing_window)
-                   ? std::max(readings_per_window * median(spacing), arm_thicknesses_per_window * h)
-                   : o.smoothing_window;
+  out.window =
+      std::isnan(o.smoothing_window) ? auto_window(median(spacing), s.h) : o.smoothing_window;
   if (!(out.window > 0))
     throw InputError(src + ": the smoothing window must be > 0 mm, got " +
                      num(out.window / units::mm));
-
-  // Beam-theory corrections per reading.
-  auto F_of = [&](double d, double a) {
-    return o.large_displacement_correction ? 1 - 0.3 * (d / a) * (d / a) - 1.5 * (d * l1 / (a * a))
-                                           : 1.0;
-  };
-  // N is not only the end-block correction: its last term, -9/35 (delta/a)^2, is the
-  // arms' own geometric stiffening (the load-line opening of an elastica falls behind the linear
-  // cantilever's), so it applies with hinges too (l2 = 0). F alone overcorrects: F/N, not F, is
-  // the ratio of the exact G of the elastica to 3 P delta / (2 B a) (to 0.05 % at delta/a = 0.5,
-  // RecordReduction.ElasticaDcbIsReducedExactlyWithFOverN).
-  auto N_of = [&](double d, double a) {
-    if (!o.large_displacement_correction)
-      return 1.0;
-    const double r = l2 / a;
-    return 1 - r * r * r - 9.0 / 8.0 * (1 - r * r) * d * l1 / (a * a) -
-           9.0 / 35.0 * (d / a) * (d / a);
-  };
 
   // Compliance fits over the readings beyond a0.
   std::vector<double> a_fit, cbrt_C, log_a, log_C, a_over_H;
   for (std::size_t j : beyond) {
     const std::size_t k = readings[j];
-    const double C = rec.opening[k] / rec.load[k] / N_of(rec.opening[k], ar[j]);
+    const double C = rec.opening[k] / rec.load[k] / s.N(rec.opening[k], ar[j]);
     a_fit.push_back(ar[j]);
     cbrt_C.push_back(std::cbrt(C));
     log_a.push_back(std::log(ar[j]));
     log_C.push_back(std::log(C));
-    a_over_H.push_back(ar[j] / (2 * h));
+    a_over_H.push_back(ar[j] / (2 * s.h));
   }
   const LineFit mbt = fit_line(a_fit, cbrt_C, 0, a_fit.size());
   const LineFit cc = fit_line(log_a, log_C, 0, log_a.size());
@@ -215,93 +167,305 @@ ReducedRecord reduce_record(const TestRecord& rec, const TestSpecimen& sp, const
   out.cc_n = cc.slope;
   out.mcc_A1 = mcc.slope;
 
-  // Direct energy at every reading (the window is centred on each reading, so it always spans
-  // whole reading steps: D is known only where a new reading was made). Two estimates: the
-  // slope over the window w and over 2 w. Where R is locally linear over 2 w both are unbiased,
-  // and their difference measures the scatter of the w estimate that the 2 w one averages out:
-  // reading noise (then close to the standard error) and tracking errors correlated over a few
-  // mm (crack readings that drift ahead of the crack and fall back), which the residual-based
-  // standard error of one window cannot see because they bend D(a) smoothly inside it.
-  const WindowLines lines(ar, Dr);
-  auto window_of = [&](double a, double w) {
-    const auto lo = std::lower_bound(ar.begin(), ar.end(), a - w / 2) - ar.begin();
-    const auto hi = std::upper_bound(ar.begin(), ar.end(), a + w / 2) - ar.begin();
-    return std::pair<std::size_t, std::size_t>(static_cast<std::size_t>(lo),
-                                               static_cast<std::size_t>(hi));
-  };
-  std::vector<double> slope(ar.size(), NAN), slope_se(ar.size(), NAN);
-  std::vector<double> diff2_sum(ar.size() + 1, 0.0), diff_count(ar.size() + 1, 0.0);
-  for (std::size_t j = 0; j < ar.size(); ++j) {
-    const auto [b, e] = window_of(ar[j], out.window);
-    std::tie(slope[j], slope_se[j]) = lines.slope(b, e);
-    const auto [b2, e2] = window_of(ar[j], 2 * out.window);
-    const double wide = lines.slope(b2, e2).first;
-    const bool ok = std::isfinite(slope[j]) && std::isfinite(wide);
-    diff2_sum[j + 1] = diff2_sum[j] + (ok ? std::pow(slope[j] - wide, 2) : 0.0);
-    diff_count[j + 1] = diff_count[j] + (ok ? 1.0 : 0.0);
-  }
+  // Direct energy: D and a at the fresh readings (as read), and with a from the monotone smooth
+  // crack (energy_rate.h) at the same rows. The window is centred on each reading, so it always
+  // spans whole reading steps.
+  const EnergySlopes as_read = energy_slopes(ar, Dr, out.window);
+  std::vector<double> gaps;
+  for (std::size_t j = 1; j < readings.size(); ++j)
+    gaps.push_back(rec.time.empty() ? double(readings[j] - readings[j - 1])
+                                    : rec.time[readings[j]] - rec.time[readings[j - 1]]);
+  const double time_window = monotone_reading_intervals * median(gaps);
+  const auto smooth = monotone_crack(rec, readings, time_window);
+  std::vector<double> am;
+  for (std::size_t k : readings)
+    am.push_back(smooth[k]);
+  const EnergySlopes monotone = energy_slopes(am, Dr, out.window);
+  const bool use_monotone = o.energy_crack == "monotone";
+  const EnergySlopes& used = use_monotone ? monotone : as_read;
+
   out.max_opening_over_a = 0;
   for (std::size_t j : beyond) {
     const std::size_t k = readings[j];
     const double P = rec.load[k], d = rec.opening[k], a = ar[j];
-    const double F = F_of(d, a), N = N_of(d, a), C = d / P / N;
+    const double F = s.F(d, a), N = s.N(d, a), C = d / P / N;
     out.line.push_back(rec.line[k]);
     out.a.push_back(a);
     out.da.push_back(a - out.a0);
     out.load.push_back(P);
     out.opening.push_back(d);
     out.max_opening_over_a = std::max(out.max_opening_over_a, d / a);
-    out.R_MBT.push_back(3 * P * d * F / (2 * B * (a + out.mbt_delta) * N));
-    out.R_CC.push_back(out.cc_n * P * d * F / (2 * B * a * N));
-    out.R_MCC.push_back(3 * P * P * std::pow(C, 2.0 / 3.0) * F / (2 * out.mcc_A1 * B * 2 * h));
+    out.R_MBT.push_back(3 * P * d * F / (2 * s.B * (a + out.mbt_delta) * N));
+    out.R_CC.push_back(out.cc_n * P * d * F / (2 * s.B * a * N));
+    out.R_MCC.push_back(3 * P * P * std::pow(C, 2.0 / 3.0) * F / (2 * out.mcc_A1 * s.B * 2 * s.h));
     if (!rec.delta_root.empty())
       out.delta_root.push_back(rec.delta_root[k]);
+    out.R_energy.push_back(used.slope[j] / s.B);
+    out.R_energy_lo.push_back(used.lo[j] / s.B);
+    out.R_energy_hi.push_back(used.hi[j] / s.B);
+    out.R_energy_readings.push_back(as_read.slope[j] / s.B);
+    out.rows.push_back(k);
+  }
+  out.notes.push_back(
+      "direct energy: R = dD/(B da), D = W - P opening/2, slope of a local least-squares line of "
+      "D against a over a " +
+      num(out.window / units::mm) + " mm window" +
+      (std::isnan(o.smoothing_window) ? " (automatic: the larger of 10 median reading spacings "
+                                        "and 4 arm thicknesses)"
+                                      : "") +
+      "; a " +
+      (use_monotone ? "from isotonic regression of the readings against time, smoothed by local "
+                      "lines over " +
+                          num(time_window) +
+                          " s (4 median reading intervals); R_energy_readings is the estimate "
+                          "against the readings as read"
+                    : std::string("as read at the fresh readings")) +
+      "; band +-2 x the larger of the slope's standard error and the scatter of neighbouring "
+      "estimates (RMS difference to the slope over twice the window, x sqrt(4/3), over the "
+      "readings within two windows either side)");
+  out.notes.push_back(
+      std::string("beam theory: ") + std::to_string(beyond.size()) + " readings beyond a0 = " +
+      num(out.a0 / units::mm) + " mm; MBT |Delta| " + num(out.mbt_delta / units::mm) +
+      " mm, CC n " + num(out.cc_n) + ", MCC A1 " + num(out.mcc_A1) + "; " +
+      (o.large_displacement_correction
+           ? "large-displacement corrections F and N applied (l1 " + num(s.l1 / units::mm) + " mm" +
+                 (s.blocks ? ", N with end blocks l2 " + num(s.l2 / units::mm) + " mm"
+                           : ", N without end blocks (l2 = 0)") +
+                 ")"
+           : std::string("no large-displacement correction")) +
+      "; largest opening/a " + num(out.max_opening_over_a));
+}
 
-    // Band: +-2 s, s the larger of the slope's standard error and the scatter of neighbouring
-    // estimates: the RMS difference between the w and 2 w estimates over the readings within
-    // two windows either side, scaled by sqrt(4/3). Why that factor: for reading errors
-    // correlated over less than a window the 2 w slope carries a quarter of the w slope's error
-    // variance (an end-to-end difference over twice the length), so the difference of the two
-    // holds 3/4 of it; for independent reading noise (1/8 of it) the factor overstates s by 7 %.
-    // Why two windows: the RMS over one window either side rests on few independent
-    // differences when the errors are correlated and scatters with them (docs/verification.md,
-    // "Test records": coverage measured both ways).
-    const auto [nb, ne] = window_of(a, scatter_windows * out.window);
-    const double n_diff = diff_count[ne] - diff_count[nb];
-    const double scatter =
-        n_diff > 0 ? std::sqrt((diff2_sum[ne] - diff2_sum[nb]) / n_diff * 4.0 / 3.0) : slope_se[j];
-    const double half = 2 * std::max(slope_se[j], scatter);
-    out.R_energy.push_back(slope[j] / B);
-    out.R_energy_lo.push_back((slope[j] - half) / B);
-    out.R_energy_hi.push_back((slope[j] + half) / B);
+/// CBBM's beam: E_f from the initial compliance at a0 + |Delta| (|Delta| as ReduceOptions says).
+CbbmBeam calibrate_cbbm(const Setup& s, const ReducedRecord& out, bool measured,
+                        std::vector<std::string>& notes) {
+  const ReduceOptions& o = *s.o;
+  CbbmBeam beam;
+  beam.width = s.B;
+  beam.arm_thickness = s.h;
+  beam.shear_modulus = o.shear_modulus;
+  std::string how;
+  if (std::isfinite(o.root_rotation)) {
+    beam.delta = o.root_rotation;
+    how = "as given";
+  } else if (measured && std::isfinite(out.mbt_delta)) {
+    beam.delta = out.mbt_delta;
+    how = "MBT's, from the crack readings";
+  } else if (std::isfinite(o.shear_modulus) && std::isfinite(o.transverse_modulus)) {
+    // chi depends on E11 = E_f, which depends on |Delta|: a fixed point, reached in a few steps
+    // (chi grows like the square root of E_f, and E_f changes by a few per cent with |Delta|).
+    beam.delta = 0;
+    for (int it = 0; it < 20; ++it) {
+      beam.flexural_modulus = cbbm_flexural_modulus(s.B, s.h, o.shear_modulus, beam.delta, out.a0,
+                                                    out.initial_compliance, s.src);
+      beam.delta =
+          corrected_beam_delta(beam.flexural_modulus, o.transverse_modulus, o.shear_modulus, s.h);
+    }
+    how = "chi h of corrected beam theory with E11 = E_f, E22 and G13";
+  } else {
+    beam.delta = 0;
+    how = "0: no crack readings and no G13 and E22 to estimate it (E_f then absorbs the root "
+          "rotation; G by CBBM is high by about |Delta|/a0, chi h/a0 ~ 5-10 %)";
+  }
+  beam.flexural_modulus = cbbm_flexural_modulus(s.B, s.h, o.shear_modulus, beam.delta, out.a0,
+                                                out.initial_compliance, s.src);
+  notes.push_back(
+      "CBBM (de Moura et al. 2008): initial compliance " + num(out.initial_compliance * 1e3) +
+      " mm/N (opening at zero load " + num(out.opening_offset / units::mm) + " mm), E_f " +
+      num(beam.flexural_modulus / 1e9) + " GPa at a0 + |Delta|, |Delta| " +
+      num(beam.delta / units::mm) + " mm (" + how + "), " +
+      (std::isfinite(o.shear_modulus) && o.shear_modulus > 0
+           ? "G13 " + num(o.shear_modulus / 1e9) + " GPa"
+           : std::string("no shear term (no G13 given)")) +
+      "; the equivalent crack includes most of the bridging zone (on FEM records it sits a "
+      "tenth of the zone behind the tip, far ahead of the traction-free crack; docs/design.md "
+      "section 6)");
+  return beam;
+}
+
+/// The equivalent crack from the load line (a_e - |Delta|) at row i, with N at that crack.
+double equivalent_at(const TestRecord& rec, std::size_t i, const CbbmBeam& beam,
+                     const ReducedRecord& out, const Setup& s) {
+  const double d = rec.opening[i] - out.opening_offset, P = rec.load[i];
+  if (!(P > 0) || !(d > 0))
+    return NAN;
+  double a = out.a0;
+  for (int it = 0; it < 3; ++it) // N depends weakly on a: three fixed-point steps
+    a = beam.effective_crack(d / P / s.N(d, a)) - beam.delta;
+  return a;
+}
+
+} // namespace
+
+ReducedRecord reduce_record(const TestRecord& rec, const TestSpecimen& sp, const ReduceOptions& o) {
+  Setup s;
+  s.src = rec.source + " (record '" + rec.name + "')";
+  sp.check(s.src);
+  s.o = &o;
+  s.B = sp.width;
+  s.h = sp.arm_thickness;
+  s.l1 = std::isnan(sp.pin_to_arm_midplane) ? s.h / 2 : sp.pin_to_arm_midplane;
+  s.blocks = !std::isnan(sp.pin_to_block_edge);
+  s.l2 = s.blocks ? sp.pin_to_block_edge : 0.0;
+  const std::string& src = s.src;
+  if (o.energy_crack != "readings" && o.energy_crack != "monotone")
+    throw InputError(src + ": energy crack must be 'readings' or 'monotone', got '" +
+                     o.energy_crack + "'");
+
+  ReducedRecord out;
+  out.name = rec.name;
+  out.source = rec.source;
+  out.cleaning = rec.cleaning;
+  // Rows without a reading are NaN; a record with none is reduced as one without the column.
+  const bool has_readings = std::any_of(rec.crack_length.begin(), rec.crack_length.end(),
+                                        [](double a) { return std::isfinite(a); });
+  const bool measured = has_readings && !o.use_equivalent_crack;
+  out.crack = measured ? "measured" : "equivalent";
+  if (has_readings) {
+    // The first row with a reading (rows without one are NaN, test_record.h).
+    std::size_t first = 0;
+    while (first < rec.crack_length.size() && !std::isfinite(rec.crack_length[first]))
+      ++first;
+    const double a_first = rec.crack_length[first];
+    out.a0 = std::isnan(sp.initial_crack) ? a_first : sp.initial_crack;
+    if (out.a0 > a_first + 1e-9)
+      throw InputError(src + ": Specimen/Initial crack " + num(out.a0 / units::mm) +
+                       " mm lies beyond the first crack reading " + num(a_first / units::mm) +
+                       " mm on line " + std::to_string(rec.line[first]));
+  } else {
+    out.a0 = std::isnan(sp.initial_crack) ? o.initial_crack_without_readings : sp.initial_crack;
+    if (!(out.a0 > 0))
+      throw InputError(src + ": the record has no crack readings; the equivalent crack needs "
+                             "the initial crack a0 (Specimen/Initial crack, --initial-crack)");
+  }
+
+  // Dissipated energy D = W - U along the whole record (every row: the load and opening are
+  // good on rows that repeat a stale crack reading).
+  const std::vector<double> D = dissipated_energy(rec);
+  if (measured)
+    reduce_measured(rec, D, s, out);
+
+  // CBBM beside the measured crack, or instead of it.
+  CbbmBeam beam;
+  InitialCompliance initial;
+  try {
+    initial = initial_linear_part(rec);
+    out.initial_compliance = initial.compliance;
+    out.opening_offset = initial.offset;
+    beam = calibrate_cbbm(s, out, measured, out.notes);
+    out.flexural_modulus = beam.flexural_modulus;
+    out.cbbm_delta = beam.delta;
+  } catch (const InputError& e) {
+    if (!measured)
+      throw;
+    out.notes.push_back(std::string("CBBM not computed: ") + e.what());
+  }
+
+  if (!measured) {
+    // Rows: where the running maximum of a_eq passes a0 + k step (from the end of the initial
+    // linear part: before it a_eq is a0 and its noise).
+    const double step = std::isnan(o.equivalent_step) ? s.h / 10 : o.equivalent_step;
+    if (!(step > 0))
+      throw InputError(src + ": the equivalent crack step must be > 0 mm");
+    const double peak = *std::max_element(rec.load.begin(), rec.load.end());
+    double running = out.a0, next = out.a0 + step;
+    for (std::size_t i = initial.end; i < rec.load.size(); ++i) {
+      // Below 5 % of the peak the compliance is the load cell's noise over a small load.
+      if (!(rec.load[i] > 0.05 * peak))
+        continue;
+      const double a = equivalent_at(rec, i, beam, out, s);
+      if (!std::isfinite(a))
+        continue;
+      running = std::max(running, a);
+      if (running < next)
+        continue;
+      next = out.a0 + step * (std::floor((running - out.a0) / step) + 1);
+      out.rows.push_back(i);
+      out.line.push_back(rec.line[i]);
+      out.a.push_back(running);
+      out.da.push_back(running - out.a0);
+      out.load.push_back(rec.load[i]);
+      out.opening.push_back(rec.opening[i]);
+      if (!rec.delta_root.empty())
+        out.delta_root.push_back(rec.delta_root[i]);
+    }
+    if (out.rows.size() < min_readings)
+      throw InputError(src + ": the equivalent crack grows by only " +
+                       std::to_string(out.rows.size()) + " steps of " + num(step / units::mm) +
+                       " mm beyond a0 = " + num(out.a0 / units::mm) + " mm; at least " +
+                       std::to_string(min_readings) + " are needed");
+    out.window = std::isnan(o.smoothing_window) ? auto_window(step, s.h) : o.smoothing_window;
+    if (!(out.window > 0))
+      throw InputError(src + ": the smoothing window must be > 0 mm, got " +
+                       num(out.window / units::mm));
+    out.max_opening_over_a = 0;
+    for (std::size_t j = 0; j < out.rows.size(); ++j)
+      out.max_opening_over_a = std::max(out.max_opening_over_a, out.opening[j] / out.a[j]);
+    const std::size_t n = out.rows.size();
+    out.R_MBT.assign(n, NAN);
+    out.R_CC.assign(n, NAN);
+    out.R_MCC.assign(n, NAN);
+    out.notes.push_back("no crack readings" +
+                        std::string(has_readings ? " used (equivalent crack asked for)" : "") +
+                        ": R against the CBBM equivalent crack at " + std::to_string(n) +
+                        " steps of " + num(step / units::mm) +
+                        " mm; MBT, CC and MCC need measured cracks and are not given");
+  }
+
+  // a_eq, G by CBBM and direct energy against a_eq at the rows.
+  if (std::isfinite(beam.flexural_modulus)) {
+    std::vector<double> Dr;
+    double running = out.a0;
+    for (std::size_t j = 0; j < out.rows.size(); ++j) {
+      const std::size_t i = out.rows[j];
+      double a = measured ? equivalent_at(rec, i, beam, out, s) : out.a[j];
+      // Held non-decreasing: the energy slopes need a sorted abscissa.
+      running = std::max(running, std::isfinite(a) ? a : running);
+      const double ae = running + beam.delta;
+      const double d = rec.opening[i] - out.opening_offset;
+      out.a_eq.push_back(running);
+      out.R_CBBM.push_back(beam.energy_release_rate(rec.load[i], ae) * s.F(d, running) /
+                           s.N(d, running));
+      Dr.push_back(D[i]);
+    }
+    const EnergySlopes eq = energy_slopes(out.a_eq, Dr, out.window);
+    for (std::size_t j = 0; j < out.rows.size(); ++j) {
+      out.R_energy_eq.push_back(eq.slope[j] / s.B);
+      out.R_energy_eq_lo.push_back(eq.lo[j] / s.B);
+      out.R_energy_eq_hi.push_back(eq.hi[j] / s.B);
+    }
+    if (!measured) {
+      out.R_energy = out.R_energy_eq;
+      out.R_energy_lo = out.R_energy_eq_lo;
+      out.R_energy_hi = out.R_energy_eq_hi;
+      out.notes.push_back("direct energy: R = dD/(B da_eq), D = W - P opening/2 against the "
+                          "equivalent crack, local lines over a " +
+                          num(out.window / units::mm) + " mm window; band as with readings");
+    }
+  }
+
+  // ASTM D5528 initiation values.
+  if (std::isfinite(out.initial_compliance)) {
+    InitiationReductions red;
+    red.a0 = out.a0;
+    red.mbt_delta = out.mbt_delta;
+    red.width = s.B;
+    red.cbbm = beam;
+    red.initial = initial;
+    red.large_displacement = o.large_displacement_correction;
+    red.l1 = s.l1;
+    red.l2 = s.l2;
+    out.initiation = initiation_values(rec, red);
   }
 
   out.energy = summarize(out.da, out.R_energy, o.plateau_fraction);
   out.mbt = summarize(out.da, out.R_MBT, o.plateau_fraction);
   out.cc = summarize(out.da, out.R_CC, o.plateau_fraction);
   out.mcc = summarize(out.da, out.R_MCC, o.plateau_fraction);
-
-  out.notes.push_back("direct energy: R = dD/(B da), D = W - P opening/2, slope of a local "
-                      "least-squares line of D against a over a " +
-                      num(out.window / units::mm) + " mm window" +
-                      (std::isnan(o.smoothing_window)
-                           ? " (automatic: the larger of 10 median reading spacings and 4 arm "
-                             "thicknesses)"
-                           : "") +
-                      "; band +-2 x the larger of the slope's standard error and the scatter of "
-                      "neighbouring estimates (RMS difference to the slope over twice the "
-                      "window, x sqrt(4/3), over the readings within two windows either side)");
-  out.notes.push_back(
-      std::string("beam theory: ") + std::to_string(beyond.size()) + " readings beyond a0 = " +
-      num(out.a0 / units::mm) + " mm; MBT |Delta| " + num(out.mbt_delta / units::mm) +
-      " mm, CC n " + num(out.cc_n) + ", MCC A1 " + num(out.mcc_A1) + "; " +
-      (o.large_displacement_correction
-           ? "large-displacement corrections F and N applied (l1 " + num(l1 / units::mm) + " mm" +
-                 (blocks ? ", N with end blocks l2 " + num(l2 / units::mm) + " mm"
-                         : ", N without end blocks (l2 = 0)") +
-                 ")"
-           : std::string("no large-displacement correction")) +
-      "; largest opening/a " + num(out.max_opening_over_a));
+  if (!out.R_CBBM.empty()) {
+    out.cbbm = summarize(out.da, out.R_CBBM, o.plateau_fraction);
+    out.energy_eq = summarize(out.da, out.R_energy_eq, o.plateau_fraction);
+  }
   return out;
 }
 
@@ -327,10 +491,15 @@ ReducedMean average_reduced(const std::vector<ReducedRecord>& records, double pl
       {&ReducedRecord::R_energy, &ReducedMean::R_energy, &ReducedMean::R_energy_std},
       {&ReducedRecord::R_MBT, &ReducedMean::R_MBT, &ReducedMean::R_MBT_std},
       {&ReducedRecord::R_CC, &ReducedMean::R_CC, &ReducedMean::R_CC_std},
-      {&ReducedRecord::R_MCC, &ReducedMean::R_MCC, &ReducedMean::R_MCC_std}};
+      {&ReducedRecord::R_MCC, &ReducedMean::R_MCC, &ReducedMean::R_MCC_std},
+      {&ReducedRecord::R_CBBM, &ReducedMean::R_CBBM, &ReducedMean::R_CBBM_std}};
   for (const auto& c : columns) {
     std::vector<std::vector<double>> values;
     for (const auto& r : records) {
+      if ((r.*(c.in)).empty()) { // CBBM not calibrated on this record
+        values.push_back(std::vector<double>(m.da.size(), NAN));
+        continue;
+      }
       // Equal extensions (none after the reader's cleaning) would break the polyline; the
       // readings are strictly increasing by construction of crack_reading_rows.
       values.push_back(resample_linear(r.da, r.*(c.in), m.da));
@@ -353,6 +522,7 @@ ReducedMean average_reduced(const std::vector<ReducedRecord>& records, double pl
   m.mbt = summarize(m.da, m.R_MBT, plateau_fraction);
   m.cc = summarize(m.da, m.R_CC, plateau_fraction);
   m.mcc = summarize(m.da, m.R_MCC, plateau_fraction);
+  m.cbbm = summarize(m.da, m.R_CBBM, plateau_fraction);
   return m;
 }
 

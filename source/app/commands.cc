@@ -38,7 +38,8 @@ Usage:
   fiberbridge synth --out FILE [law options] [--replicates N] [--noise J_M2] [--seed S]
                                         synthetic replicate data from a law (labelled as such)
   fiberbridge reduce RECORD.csv... --width MM --arm-thickness MM [--columns MAP] [--out DIR]
-                                        raw DCB records -> R(a) by direct energy, MBT, CC, MCC
+                                        raw DCB records -> R(a) by direct energy, MBT, CC, MCC,
+                                        CBBM (equivalent crack, also without crack readings)
   fiberbridge parameters                print every scene parameter with its documentation
   fiberbridge COMMAND --help            options of one command
 )";
@@ -258,6 +259,16 @@ int cmd_reduce(const std::vector<std::string>& args) {
       "'time_s: Time (s), opening_mm: ..., load_N: ..., a_mm: ...'")(
       "smoothing-window", po::value<double>()->default_value(0), "mm; 0 = automatic")(
       "out", po::value<std::string>()->default_value("output/reduce"), "output directory");
+  // R without crack readings (CBBM equivalent crack; docs/design.md section 6).
+  d.add_options()("crack-length", po::value<std::string>()->default_value("auto"),
+                  "auto (measured where the records have a_mm), measured or equivalent")(
+      "initial-crack", po::value<double>(), "a0 in mm (needed without crack readings)")(
+      "shear-modulus", po::value<double>(), "G13 of the arms in MPa (CBBM's shear term)")(
+      "transverse-modulus", po::value<double>(),
+      "E22 in MPa (with G13: |Delta| = chi h without crack readings)")(
+      "root-rotation", po::value<double>(), "|Delta| of CBBM in mm (overrides the above)")(
+      "energy-crack", po::value<std::string>()->default_value("monotone"),
+      "direct energy against: monotone (smooth a(t)) or readings (as read)");
   po::variables_map vm;
   if (!parse(args, d, "records", -1, vm))
     return 0;
@@ -272,11 +283,24 @@ int cmd_reduce(const std::vector<std::string>& args) {
   o.read.columns = analysis::RecordColumnMap::parse(vm["columns"].as<std::string>(), "--columns");
   const double w = vm["smoothing-window"].as<double>();
   o.reduce.smoothing_window = w > 0 ? w * units::mm : NAN;
+  const std::string crack = vm["crack-length"].as<std::string>();
+  if (crack != "auto" && crack != "measured" && crack != "equivalent")
+    throw InputError("--crack-length: expected auto, measured or equivalent, got '" + crack + "'");
+  o.reduce.use_equivalent_crack = crack == "equivalent";
+  auto opt = [&](const char* key, double unit) {
+    return vm.count(key) ? vm[key].as<double>() * unit : NAN;
+  };
+  o.specimen.initial_crack = opt("initial-crack", units::mm);
+  o.reduce.shear_modulus = opt("shear-modulus", 1e6);
+  o.reduce.transverse_modulus = opt("transverse-modulus", 1e6);
+  o.reduce.root_rotation = opt("root-rotation", units::mm);
+  o.reduce.energy_crack = vm["energy-crack"].as<std::string>();
   const auto r = app::run_reduce(o, out, summary);
   app::write_run_summary(out, summary);
   std::cout << r.reduced.size() << " record(s); mean plateau R: energy " << r.mean.energy.plateau
             << ", MBT " << r.mean.mbt.plateau << ", CC " << r.mean.cc.plateau << ", MCC "
-            << r.mean.mcc.plateau << " J/m^2; results in " << out << "\n";
+            << r.mean.mcc.plateau << ", CBBM " << r.mean.cbbm.plateau << " J/m^2; results in "
+            << out << "\n";
   return 0;
 }
 

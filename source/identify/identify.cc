@@ -164,7 +164,42 @@ struct PreparedRecord {
   double peak_load = 0;
   double compliance = 0;
   std::vector<std::size_t> crack_rows; ///< fresh crack readings (the first excluded)
+  /// A crack length at each row for start values and diagnostics: the reading, or without
+  /// readings (load and opening alone) the corrected-beam-theory crack from the row's compliance,
+  /// a + chi h = (a0 + chi h) (C/C0)^(1/3) (held at a0 or more; rows under 5 % of the peak a0).
+  std::vector<double> crack_estimate;
 };
+
+/// The first crack reading of a record (rows without one are NaN; NaN when it has none).
+double first_reading(const analysis::TestRecord& rec) {
+  for (double a : rec.crack_length)
+    if (std::isfinite(a))
+      return a;
+  return NAN;
+}
+
+/// PreparedRecord::crack_estimate.
+std::vector<double> crack_estimate(const analysis::TestRecord& rec, const PreparedRecord& pr) {
+  if (std::isfinite(first_reading(rec))) {
+    // Rows without a reading (NaN, as the reader leaves them) hold the last reading.
+    std::vector<double> a = rec.crack_length;
+    double last = pr.specimen.initial_crack;
+    for (double& v : a)
+      v = std::isfinite(v) ? (last = v) : last;
+    return a;
+  }
+  const double a0 = pr.specimen.initial_crack;
+  const double chi_h = specimen::cbt_chi(pr.material) * pr.specimen.arm_thickness();
+  std::vector<double> a(rec.load.size(), a0);
+  double running = a0;
+  for (std::size_t i = 0; i < rec.load.size(); ++i) {
+    if (rec.load[i] > 0.05 * pr.peak_load && rec.opening[i] > 0)
+      running = std::max(
+          running, (a0 + chi_h) * std::cbrt(rec.opening[i] / rec.load[i] / pr.compliance) - chi_h);
+    a[i] = running;
+  }
+  return a;
+}
 
 class Misfit {
 public:
@@ -193,7 +228,9 @@ public:
         f.peak_load = pr.peak_load;
         f.opening = rec.opening;
         f.load = rec.load;
-        f.crack_length = rec.crack_length;
+        // NaN on every row without readings, so that writers can index it as the other columns.
+        f.crack_length = rec.crack_length.empty() ? std::vector<double>(rec.opening.size(), NAN)
+                                                  : rec.crack_length;
         f.model_load = model_load;
         f.model_crack_length = model_a;
         f.min_F = min_F;
@@ -201,7 +238,7 @@ public:
         for (std::size_t i = 0; i < rec.opening.size(); ++i) {
           sp += std::pow(model_load[i] - rec.load[i], 2);
           f.max_opening_over_a =
-              std::max(f.max_opening_over_a, rec.opening[i] / rec.crack_length[i]);
+              std::max(f.max_opening_over_a, rec.opening[i] / pr.crack_estimate[i]);
         }
         for (std::size_t i : pr.crack_rows)
           sa += std::pow(model_a[i] - rec.crack_length[i], 2);
@@ -231,7 +268,7 @@ private:
                 std::vector<double>& a, double& min_F) {
     const auto& rec = *pr.record;
     beam::BeamParameters bp = settings_.beam;
-    const double a_last = rec.crack_length.back();
+    const double a_last = pr.crack_estimate.back();
     const double min_lig = bp.minimum_ligament > 0 ? bp.minimum_ligament : pr.specimen.height;
     // Run a few advances past the last reading (the model may lag it), within the ligament.
     bp.final_crack_length =
@@ -272,13 +309,16 @@ Parameters start_value(const std::vector<PreparedRecord>& records, const Identif
   for (const auto& pr : records) {
     const auto& rec = *pr.record;
     const std::size_t first = pr.crack_rows.empty() ? rec.load.size() / 4 : pr.crack_rows.front();
-    j_tip += cbt_g(pr.specimen, pr.material, rec.load[first], rec.crack_length[first - 1]);
+    const auto& a = pr.crack_estimate;
+    // Without readings: the row a quarter into the record, at a0 (an estimate to start from).
+    j_tip += cbt_g(pr.specimen, pr.material, rec.load[first],
+                   pr.crack_rows.empty() ? pr.specimen.initial_crack : a[first - 1]);
     double g = 0;
     const std::size_t from = 2 * rec.load.size() / 3;
     for (std::size_t i = from; i < rec.load.size(); ++i)
-      g += cbt_g(pr.specimen, pr.material, rec.load[i], rec.crack_length[i]);
+      g += cbt_g(pr.specimen, pr.material, rec.load[i], a[i]);
     g_end += g / static_cast<double>(rec.load.size() - from);
-    const double a_end = rec.crack_length.back();
+    const double a_end = a.back();
     root_opening += rec.opening.back() * (a_end - pr.specimen.initial_crack) / a_end;
   }
   const double n = static_cast<double>(records.size());
@@ -441,9 +481,15 @@ double initial_compliance(const analysis::TestRecord& rec, const IdentifySetting
   // Before initiation: up to the first reading beyond a0 by more than three times the reading
   // scatter (a noisy tracker changes its reading before the crack grows).
   std::size_t end = 0;
-  while (end < rec.load.size() &&
-         rec.crack_length[end] - rec.crack_length.front() <= 3 * s.crack_scatter)
-    ++end;
+  if (!std::isfinite(
+          first_reading(rec))) // no readings: the rows before the load first passes the window
+    while (end < rec.load.size() && rec.load[end] <= s.compliance_high * peak)
+      ++end;
+  else
+    // A row without a reading (NaN) counts as before the growth.
+    while (end < rec.load.size() &&
+           !(rec.crack_length[end] - first_reading(rec) > 3 * s.crack_scatter))
+      ++end;
   double n = 0, sp = 0, sd = 0, spp = 0, spd = 0;
   for (std::size_t i = 0; i < end; ++i)
     if (rec.load[i] >= s.compliance_low * peak && rec.load[i] <= s.compliance_high * peak) {
@@ -546,15 +592,24 @@ Identification identify_law(const std::vector<analysis::TestRecord>& records,
     PreparedRecord pr;
     pr.record = &rec;
     pr.specimen = specimen;
-    pr.specimen.initial_crack = rec.crack_length.front();
+    // Without crack readings (load and opening alone) a0 is the specimen's.
+    if (!rec.crack_length.empty())
+      if (std::isfinite(first_reading(rec)))
+        pr.specimen.initial_crack = first_reading(rec);
     pr.specimen.validate("Specimen (record " + rec.name + ")");
     pr.material = quoted;
     pr.peak_load = *std::max_element(rec.load.begin(), rec.load.end());
     pr.compliance = initial_compliance(rec, settings);
     if (settings.calibrate_modulus)
       pr.material.E_L = modulus_for_compliance(pr.specimen, quoted, pr.compliance);
-    const auto rows = analysis::crack_reading_rows(rec);
-    pr.crack_rows.assign(rows.begin() + 1, rows.end());
+    auto rows = analysis::crack_reading_rows(rec);
+    // Rows without a reading are NaN (test_record.h): never a reading.
+    rows.erase(std::remove_if(rows.begin(), rows.end(),
+                              [&](std::size_t k) { return !std::isfinite(rec.crack_length[k]); }),
+               rows.end());
+    if (!rows.empty())
+      pr.crack_rows.assign(rows.begin() + 1, rows.end());
+    pr.crack_estimate = crack_estimate(rec, pr);
     if (progress)
       progress("identify: record " + rec.name + ": a0 " + fmt(pr.specimen.initial_crack / mm) +
                " mm, initial compliance " + fmt(pr.compliance / mm) + " mm/N, E_L " +
@@ -719,7 +774,8 @@ Identification identify_law(const std::vector<analysis::TestRecord>& records,
   for (const auto& f : out.records) {
     sp += std::pow(f.load_rms_rel, 2) * f.opening.size();
     np += f.opening.size();
-    const std::size_t n = analysis::crack_reading_rows(records[&f - &out.records[0]]).size() - 1;
+    const std::size_t readings = analysis::crack_reading_rows(records[&f - &out.records[0]]).size();
+    const std::size_t n = readings > 0 ? readings - 1 : 0;
     sa += std::pow(f.crack_rms, 2) * n;
     na += n;
   }

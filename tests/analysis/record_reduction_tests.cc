@@ -297,3 +297,49 @@ TEST(RecordReduction, EnergyBandHoldsTheSwingsOnDcb01) {
   EXPECT_LT(half / n, 2.5 * std::sqrt(swing2 / n));
   EXPECT_GT(half / n, 1.5 * std::sqrt(swing2 / n));
 }
+
+// R without crack readings on the shared records (issue 31 item 3): each record with its crack
+// column dropped, reduced against the CBBM equivalent crack (a0 = its first reading; G13 and E22
+// from data/dcb_records/README.md's approximate moduli, 2.29 and 6.11 GPa), against the MBT
+// plateau of the same record with its readings. |Delta| decides it: MBT's |Delta| on these
+// records is 5.9-16.7 mm, far above corrected beam theory's chi h (2.4-3.6 mm with the E_f each
+// calibrates), so the readings' origin or the crosshead's own compliance is not what a beam at a0
+// expects. Measured (docs/verification.md, "R without crack readings and step-wise readings"):
+// with chi h the plateau is +11, +13, +45, +26 % off MBT's (the equivalent crack ends 5-12 mm
+// short of the last reading); with MBT's |Delta| given (ReduceOptions::root_rotation, as a lab
+// would carry it from a calibration test with readings) +4.3, +5.2, -5.4, -6.1 %. The bound is on
+// the second: 8 %, the measured worst plus the 2 % by which CBBM and MBT already differ beside the
+// readings (Timoshenko's shear term against MBT's fitted line).
+TEST(RecordReduction, SharedRecordsWithoutTheCrackColumn) {
+  for (const char* name : shared_records) {
+    const auto rec = read_test_records(record_path(name), shared_columns()).at(0);
+    const auto with = reduce_record(rec, shared_specimen());
+    TestRecord bare = rec;
+    bare.crack_length.clear();
+    TestSpecimen sp = shared_specimen();
+    sp.initial_crack = rec.crack_length.front();
+    ReduceOptions o;
+    o.shear_modulus = 2.29e9;
+    o.transverse_modulus = 6.11e9;
+    const auto chi = reduce_record(bare, sp, o);
+    ASSERT_EQ(chi.crack, "equivalent");
+    o.root_rotation = with.mbt_delta;
+    const auto eq = reduce_record(bare, sp, o);
+    std::printf("%s: MBT plateau %.0f J/m^2 with readings (|Delta| %.2f mm); without: CBBM "
+                "plateau %.0f (%+.1f %%) with MBT's |Delta|, %.0f (%+.1f %%) with chi h %.2f mm; "
+                "direct energy vs a_eq %.0f (%+.1f %%); final a_eq %.1f / %.1f mm vs last reading "
+                "%.1f mm; beside the readings CBBM %.0f\n",
+                name, with.mbt.plateau, with.mbt_delta / mm, eq.cbbm.plateau,
+                100 * (eq.cbbm.plateau / with.mbt.plateau - 1), chi.cbbm.plateau,
+                100 * (chi.cbbm.plateau / with.mbt.plateau - 1), chi.cbbm_delta / mm,
+                eq.energy.plateau, 100 * (eq.energy.plateau / with.mbt.plateau - 1),
+                eq.a.back() / mm, chi.a.back() / mm, with.a.back() / mm, with.cbbm.plateau);
+    std::printf(
+        "   initiation NL / 5 %%-max / VIS: MBT %.0f / %.0f / %.0f, CBBM %.0f / %.0f / %.0f "
+        "J/m^2 (lines %zu / %zu / %zu)\n",
+        with.initiation.nl.G_MBT, with.initiation.offset5_max.G_MBT, with.initiation.vis.G_MBT,
+        with.initiation.nl.G_CBBM, with.initiation.offset5_max.G_CBBM, with.initiation.vis.G_CBBM,
+        with.initiation.nl.line, with.initiation.offset5_max.line, with.initiation.vis.line);
+    EXPECT_NEAR(eq.cbbm.plateau / with.mbt.plateau, 1, 0.08) << name;
+  }
+}

@@ -212,3 +212,30 @@ TEST(Identify, JobRunnerOrderDoesNotChangeTheResult) {
   EXPECT_TRUE(same_all(serial.band_lo, other.band_lo));
   EXPECT_TRUE(same_all(serial.band_hi, other.band_hi));
 }
+
+// identify on load and opening alone (issue 31 item 3): DCB-01 with its crack column dropped
+// (a0 = its first reading, from the Specimen) against the same record with it. The load misfit
+// carries the whole fit; the bound on it is the shared-record test's (4 % of the peak). Without
+// readings the crack is seen only through the compliance, which trades J_tip against the law's
+// rising part, while the plateau load holds G_ss. Measured (docs/verification.md, "R without
+// crack readings, initiation values, step-wise readings"): G_ss 1089 against 1037 J/m^2 with
+// readings (+5.0 %), J_tip 395 against 387, load RMS 1.38 % against 2.70 % (the crack no longer
+// pulls the fit off the load curve). The bound of 10 % on G_ss is twice the measured difference:
+// the optimizer's two starts end within a few per cent of each other on these records.
+TEST(Identify, LoadAndOpeningAlone) {
+  const auto rec = shared_record("DCB-01");
+  analysis::TestRecord bare = rec;
+  bare.crack_length.clear();
+  auto sp = record_specimen();
+  sp.initial_crack = rec.crack_length.front();
+  IdentifySettings s;
+  const auto with = identify_law({rec}, sp, record_material(19.3e9), s);
+  const auto without = identify_law({bare}, sp, record_material(19.3e9), s);
+  std::printf("DCB-01 with readings: J_tip %.0f G_ss %.0f J/m^2, load rms %.2f %%; without: J_tip "
+              "%.0f G_ss %.0f J/m^2, load rms %.2f %%, %d evaluations, %.1f s\n",
+              with.j_tip, with.g_ss, 100 * with.load_rms_rel, without.j_tip, without.g_ss,
+              100 * without.load_rms_rel, without.evaluations, without.wall_time_s);
+  EXPECT_EQ(without.crack_rms, 0);
+  EXPECT_LT(without.load_rms_rel, 0.04);
+  EXPECT_NEAR(without.g_ss / with.g_ss, 1, 0.10);
+}

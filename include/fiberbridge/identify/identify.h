@@ -134,7 +134,9 @@ std::vector<std::string> serial_jobs(const std::string& what, std::size_t n,
                                      const IdentifyJob& job);
 
 /// Identifies one law and J_tip from the records jointly. `specimen` gives width, height and
-/// length; each record's a0 is its first crack reading. `progress` gets occasional lines.
+/// length; each record's a0 is its first crack reading. A record without crack readings
+/// (crack_length empty) is fitted on load and opening alone, with `specimen`'s initial crack as
+/// its a0 (docs/design.md section 6, "R without crack readings"). `progress` gets occasional lines.
 /// `run_jobs` runs the independent forward runs (the optimizer starts, each polish round, the
 /// Jacobian's perturbed runs); the result is the same, bit for bit, whatever runner runs them
 /// where (each job's result crosses as raw bytes and the merge follows the serial order).

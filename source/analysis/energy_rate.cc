@@ -1,0 +1,198 @@
+// Direct-energy rate and its band; monotone smooth crack lengths (energy_rate.h).
+#include "fiberbridge/analysis/energy_rate.h"
+
+#include "fiberbridge/analysis/line_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace fiberbridge::analysis {
+
+namespace {
+
+/// The band's scatter of neighbouring estimates is taken over this many windows (centred).
+constexpr double scatter_windows = 4;
+
+/// Local straight lines of y against x over windows [begin, end) in O(1) each: prefix sums of
+/// the samples taken about their overall means, so that window sums far from the origin keep
+/// their digits (the dissipated energy grows to a few joules while its noise is ~1e-4 J).
+class WindowLines {
+public:
+  WindowLines(const std::vector<double>& x, const std::vector<double>& y) {
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      x0_ += x[i] / static_cast<double>(x.size());
+      y0_ += y[i] / static_cast<double>(y.size());
+    }
+    sx_.assign(x.size() + 1, 0.0);
+    sy_ = sxx_ = sxy_ = syy_ = sx_;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double u = x[i] - x0_, v = y[i] - y0_;
+      sx_[i + 1] = sx_[i] + u;
+      sy_[i + 1] = sy_[i] + v;
+      sxx_[i + 1] = sxx_[i] + u * u;
+      sxy_[i + 1] = sxy_[i] + u * v;
+      syy_[i + 1] = syy_[i] + v * v;
+    }
+  }
+  /// Slope over [b, e) and its standard error from the residuals; NaN below 3 points or with
+  /// no spread in x.
+  std::pair<double, double> slope(std::size_t b, std::size_t e) const {
+    const double n = static_cast<double>(e - b);
+    if (e - b < 3)
+      return {NAN, NAN};
+    const double mx = (sx_[e] - sx_[b]) / n, my = (sy_[e] - sy_[b]) / n;
+    const double Sxx = sxx_[e] - sxx_[b] - n * mx * mx;
+    const double Sxy = sxy_[e] - sxy_[b] - n * mx * my;
+    const double Syy = syy_[e] - syy_[b] - n * my * my;
+    if (!(Sxx > 0))
+      return {NAN, NAN};
+    const double k = Sxy / Sxx;
+    const double ss = std::max(0.0, Syy - k * Sxy);
+    return {k, std::sqrt(ss / (n - 2) / Sxx)};
+  }
+
+private:
+  double x0_ = 0, y0_ = 0;
+  std::vector<double> sx_, sy_, sxx_, sxy_, syy_;
+};
+
+} // namespace
+
+std::vector<double> dissipated_energy(const TestRecord& rec) {
+  const std::size_t n = rec.opening.size();
+  std::vector<double> D(n, 0.0);
+  double W = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    W += 0.5 * (rec.load[i] + rec.load[i - 1]) * (rec.opening[i] - rec.opening[i - 1]);
+    D[i] = W - 0.5 * rec.load[i] * rec.opening[i];
+  }
+  return D;
+}
+
+EnergySlopes energy_slopes(const std::vector<double>& a, const std::vector<double>& D,
+                           double window) {
+  // Two estimates at every point: the slope over the window w and over 2 w. Where R is locally
+  // linear over 2 w both are unbiased, and their difference measures the scatter of the w
+  // estimate that the 2 w one averages out: reading noise (then close to the standard error) and
+  // tracking errors correlated over a few mm, which the residual-based standard error of one
+  // window cannot see because they bend D(a) smoothly inside it.
+  const WindowLines lines(a, D);
+  auto window_of = [&](double x, double w) {
+    const auto lo = std::lower_bound(a.begin(), a.end(), x - w / 2) - a.begin();
+    const auto hi = std::upper_bound(a.begin(), a.end(), x + w / 2) - a.begin();
+    return std::pair<std::size_t, std::size_t>(static_cast<std::size_t>(lo),
+                                               static_cast<std::size_t>(hi));
+  };
+  const std::size_t n = a.size();
+  std::vector<double> slope(n, NAN), slope_se(n, NAN);
+  std::vector<double> diff2_sum(n + 1, 0.0), diff_count(n + 1, 0.0);
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto [b, e] = window_of(a[j], window);
+    std::tie(slope[j], slope_se[j]) = lines.slope(b, e);
+    const auto [b2, e2] = window_of(a[j], 2 * window);
+    const double wide = lines.slope(b2, e2).first;
+    const bool ok = std::isfinite(slope[j]) && std::isfinite(wide);
+    diff2_sum[j + 1] = diff2_sum[j] + (ok ? std::pow(slope[j] - wide, 2) : 0.0);
+    diff_count[j + 1] = diff_count[j] + (ok ? 1.0 : 0.0);
+  }
+  EnergySlopes out;
+  out.slope = slope;
+  out.lo.resize(n);
+  out.hi.resize(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    // s: the larger of the slope's standard error and the RMS difference between the w and 2 w
+    // estimates within two windows either side, x sqrt(4/3). Why that factor: for reading errors
+    // correlated over less than a window the 2 w slope carries a quarter of the w slope's error
+    // variance (an end-to-end difference over twice the length), so the difference of the two
+    // holds 3/4 of it; for independent reading noise (1/8 of it) the factor overstates s by 7 %.
+    // Why two windows: the RMS over one window either side rests on few independent differences
+    // when the errors are correlated and scatters with them (docs/verification.md, "Test
+    // records": coverage measured both ways).
+    const auto [nb, ne] = window_of(a[j], scatter_windows * window);
+    const double n_diff = diff_count[ne] - diff_count[nb];
+    const double scatter =
+        n_diff > 0 ? std::sqrt((diff2_sum[ne] - diff2_sum[nb]) / n_diff * 4.0 / 3.0) : slope_se[j];
+    const double half = 2 * std::max(slope_se[j], scatter);
+    out.lo[j] = slope[j] - half;
+    out.hi[j] = slope[j] + half;
+  }
+  return out;
+}
+
+std::vector<double> isotonic(const std::vector<double>& y) {
+  // Blocks of pooled values (mean, weight); a new value that falls below the last block's mean
+  // is merged with it, and merging repeats backwards while the order is violated.
+  std::vector<double> mean, weight;
+  std::vector<std::size_t> count;
+  for (double v : y) {
+    mean.push_back(v);
+    weight.push_back(1);
+    count.push_back(1);
+    while (mean.size() > 1 && mean[mean.size() - 2] > mean.back()) {
+      const std::size_t k = mean.size() - 1;
+      const double w = weight[k - 1] + weight[k];
+      mean[k - 1] = (mean[k - 1] * weight[k - 1] + mean[k] * weight[k]) / w;
+      weight[k - 1] = w;
+      count[k - 1] += count[k];
+      mean.pop_back();
+      weight.pop_back();
+      count.pop_back();
+    }
+  }
+  std::vector<double> out;
+  out.reserve(y.size());
+  for (std::size_t k = 0; k < mean.size(); ++k)
+    out.insert(out.end(), count[k], mean[k]);
+  return out;
+}
+
+std::vector<double> monotone_crack(const TestRecord& rec, const std::vector<std::size_t>& readings,
+                                   double time_window) {
+  auto time_of = [&](std::size_t i) {
+    return rec.time.empty() ? static_cast<double>(i) : rec.time[i];
+  };
+  std::vector<double> t, a;
+  for (std::size_t k : readings) {
+    t.push_back(time_of(k));
+    a.push_back(rec.crack_length[k]);
+  }
+  const std::vector<double> iso = isotonic(a);
+  const std::size_t n = rec.opening.size();
+  std::vector<double> out(n);
+  double running = iso.front();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ti = time_of(i);
+    double v;
+    if (ti <= t.front())
+      v = iso.front();
+    else if (ti >= t.back())
+      v = iso.back();
+    else {
+      auto b = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), ti - time_window / 2) -
+                                        t.begin());
+      auto e = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), ti + time_window / 2) -
+                                        t.begin());
+      // At least the readings either side (and 3 in all): the line then interpolates where the
+      // readings are sparse.
+      const auto at =
+          static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), ti) - t.begin());
+      b = std::min(b, at - 1);
+      e = std::max(e, std::min(at + 1, t.size()));
+      if (e - b < 3) {
+        if (b > 0)
+          --b;
+        else if (e < t.size())
+          ++e;
+      }
+      const LineFit f = fit_line(t, iso, b, e);
+      v = f.valid ? f.at(ti) : iso[at - 1];
+      v = std::clamp(v, iso.front(), iso.back());
+    }
+    running = std::max(running, v);
+    out[i] = running;
+  }
+  return out;
+}
+
+} // namespace fiberbridge::analysis
