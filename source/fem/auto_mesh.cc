@@ -9,9 +9,28 @@
 
 namespace fiberbridge::fem {
 
+const double kAutoLargestElement = 2e-3;
+// 0.5 mm on the seed specimen (300 mm). Cost: the 30 MPa / 0.02 mm law took 3.5 s at 0.5 mm and
+// 19.8 s at 0.25 mm on the idle machine (docs/verification.md, "Strong short laws"); the 20 MPa
+// / 0.05 mm law at 0.25 mm took 200 s on the shared machine (docs/verification.md, "The automatic
+// mesh"). A default run is not to take minutes: finer than this, the user says so.
+const double kAutoMostElementsAlongLength = 600;
+// The zone rule asks for kMinZoneSpacings = 3 elements. The smallest ratio of a measured,
+// resolved zone to the estimate was 0.42 (10 MPa / 0.1 mm on the seed specimen: 2.78 mm at 0.5 mm
+// elements against 6.56 mm; docs/verification.md, "The automatic mesh"): 3 / 0.42 = 7.1, so 8.
+const double kAutoElementsPerZoneEstimate = 8;
+
 namespace {
 constexpr double mm = units::mm;
+
+/// The largest a0 / n not above `size`: the mesh snaps the element to a0 / round(a0 / size)
+/// (crack_plane_step), which may round up past a bound; auto snaps down instead, so the snapped
+/// element keeps every bound it was chosen under.
+double snap_down(const specimen::Specimen& specimen, double size) {
+  const double a0 = specimen.initial_crack;
+  return a0 / std::ceil(a0 / size * (1 - 1e-12));
 }
+} // namespace
 
 double arm_element_size(const specimen::Specimen& specimen, const FemParameters& p) {
   const double h = specimen.arm_thickness(), a0 = specimen.initial_crack;
@@ -21,7 +40,7 @@ double arm_element_size(const specimen::Specimen& specimen, const FemParameters&
   const double ligament = specimen.length - a0 - h;
   if (ligament > 0 && hw > 0)
     size = std::min(size, ligament / hw);
-  return size;
+  return snap_down(specimen, size);
 }
 
 double element_length(const specimen::Specimen& specimen, const FemParameters& p) {
@@ -81,7 +100,7 @@ MeshChoice choose_mesh(const specimen::Specimen& specimen, const specimen::Mater
       const double for_zone = c.zone_estimate / kAutoElementsPerZoneEstimate;
       const double floor = specimen.length / kAutoMostElementsAlongLength;
       if (for_zone < c.element_size) {
-        c.element_size = std::max(for_zone, floor);
+        c.element_size = snap_down(specimen, std::max(for_zone, floor));
         c.reason = "auto: the estimated cohesive zone, " + fmt(c.zone_estimate / mm, 3) +
                    " mm (the smaller of E' G_c/sigma_max^2 and (E_L G_c/sigma_max^2)^(1/4) "
                    "h^(3/4)), over " +

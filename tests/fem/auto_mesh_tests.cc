@@ -50,8 +50,8 @@ specimen::Specimen composite(double arm) {
 
 // The choice on the extreme cases. Long zones (the seed PVA law) and LEFM keep the old default
 // 2 mm on the thick seed arms; thin arms take the largest element the aspect bound admits (4
-// crack-plane layers of h/4 long: h); short zones take the estimate over 10, not below the cost
-// floor Length/1200; a given size is honoured.
+// crack-plane layers of h/4 long: h); short zones take the estimate over 8, not below the cost
+// floor Length/600; a given size is honoured.
 TEST(AutoMesh, ChoiceFollowsTheArmAndTheZone) {
   const fem::FemParameters prm; // auto
   ASSERT_TRUE(prm.mesh.automatic_size());
@@ -67,7 +67,10 @@ TEST(AutoMesh, ChoiceFollowsTheArmAndTheZone) {
 
   for (const double arm : {1.5, 1.0}) {
     c = fem::choose_mesh(composite(arm * mm), thin_dcb_case::material(), law::NoBridgingLaw(), prm);
-    EXPECT_NEAR(c.element_size, arm * mm, 1e-12) << arm;
+    // h, snapped down to a0 / n (35 mm / 24 = 1.458 mm on the 1.5 mm arms): within the bound.
+    EXPECT_LE(c.element_size, arm * mm * (1 + 1e-12)) << arm;
+    EXPECT_GT(c.element_size, 0.95 * arm * mm) << arm;
+    EXPECT_NO_THROW(fem::dcb_mesh_lines(composite(arm * mm), fem::with_mesh(prm, c))) << arm;
     EXPECT_GE(c.layers_per_arm, prm.mesh.min_layers) << arm;
     EXPECT_NE(c.reason.find("the arm"), std::string::npos) << c.reason;
   }
@@ -79,11 +82,13 @@ TEST(AutoMesh, ChoiceFollowsTheArmAndTheZone) {
   const auto ten = law::make_linear_softening(10000 * kPa, 0.1 * mm);
   c = fem::choose_mesh(seed, wood, ten, prm);
   EXPECT_NEAR(c.zone_estimate / (6.56 * mm), 1.0, 0.005);
-  EXPECT_NEAR(c.element_size, c.zone_estimate / fem::kAutoElementsPerZoneEstimate, 1e-12);
+  // 0.82 mm, snapped down to a0 / n.
+  EXPECT_LE(c.element_size, c.zone_estimate / fem::kAutoElementsPerZoneEstimate);
+  EXPECT_GT(c.element_size, 0.99 * c.zone_estimate / fem::kAutoElementsPerZoneEstimate);
 
   const auto thirty = law::make_linear_softening(30000 * kPa, 0.02 * mm);
   c = fem::choose_mesh(seed, wood, thirty, prm);
-  EXPECT_NEAR(c.element_size, seed.length / fem::kAutoMostElementsAlongLength, 1e-12);
+  EXPECT_NEAR(c.element_size, seed.length / fem::kAutoMostElementsAlongLength, 1e-12); // 0.5
   EXPECT_NE(c.reason.find("cost floor"), std::string::npos) << c.reason;
 
   fem::FemParameters given;
@@ -123,10 +128,13 @@ TEST(AutoMesh, ThinLefmCompositeFollowsCbtOnDefaults) {
 }
 
 // Issue 34's second door, on the defaults of the seed specimen: the 20 MPa / 0.05 mm linear law
-// (J_c 500 J/m^2 on J_tip 100) used to end with reached_steady_state true and G_ss +3.0 % while
-// its note said the zone spans 0.65 elements. On auto its zone is resolved (the cost floor,
-// 0.25 mm, puts 4-5 elements in a zone of 1.1-1.3 mm) and G_ss is within the issue's 2 % of
-// J_tip + J_c; a run that could not resolve it must say so in the flag and the status instead.
+// (J_c 500 J/m^2 on J_tip 100) used to end with reached_steady_state true and G_ss +3.0 % on
+// 2 mm elements while its note said the zone spans 0.65 elements. The issue asks for either
+// G_ss within 2 % of J_tip + J_c or reached_steady_state false with the reason. Auto estimates
+// the zone at 1.64 mm, which wants 0.2 mm elements; it runs at the cost floor (0.5 mm on the
+// 300 mm specimen), where the zone (measured 0.92 mm) spans 1.8 elements: the run claims no
+// steady state and says so (status zone_unresolved), and its G_ss is within the 2 % anyway
+// (measured +0.42 %, docs/verification.md "The automatic mesh").
 TEST(AutoMesh, TwentyMegapascalLawOnSeedDefaults) {
   const auto law = law::make_linear_softening(20000 * kPa, 0.05 * mm);
   const double j_tip = 100, G = j_tip + law.area();
@@ -134,10 +142,27 @@ TEST(AutoMesh, TwentyMegapascalLawOnSeedDefaults) {
   const auto r = fem::simulate_dcb(specimen::Specimen(), specimen::Material(), law, j_tip,
                                    fem::FemParameters());
   print(r);
-  ASSERT_TRUE(r.reached_steady_state);
-  EXPECT_EQ(r.steady_state_status, result::SteadyStateStatus::resolved);
+  EXPECT_FALSE(r.reached_steady_state);
+  EXPECT_EQ(r.steady_state_status, result::SteadyStateStatus::zone_unresolved);
+  EXPECT_TRUE(has_note(r, "no steady state claimed: the cohesive zone spans"));
+  EXPECT_TRUE(has_note(r, "resolution: the cohesive zone is at most"));
   EXPECT_NEAR(r.G_ss / G, 1.0, 0.02);
-  EXPECT_FALSE(has_note(r, "resolution: the cohesive zone is at most"));
+}
+
+// The 30 MPa / 0.02 mm law (J_c 300 J/m^2 on J_tip 100) on the seed defaults: its zone (about
+// 0.3-0.5 mm) needs the 0.25 mm elements that took 20 s on the idle machine; auto runs at the
+// 0.5 mm floor, where G_ss is +2.7 % (docs/verification.md, "Strong short laws"): outside the
+// issue's 2 %, so the run must claim no steady state and give the reason and the size that
+// would resolve the zone.
+TEST(AutoMesh, ThirtyMegapascalLawOnSeedDefaultsIsFlagged) {
+  const auto law = law::make_linear_softening(30000 * kPa, 0.02 * mm);
+  const auto r =
+      fem::simulate_dcb(specimen::Specimen(), specimen::Material(), law, 100, fem::FemParameters());
+  print(r);
+  EXPECT_FALSE(r.reached_steady_state);
+  EXPECT_EQ(r.steady_state_status, result::SteadyStateStatus::zone_unresolved);
+  EXPECT_TRUE(has_note(r, "no steady state claimed: the cohesive zone spans"));
+  EXPECT_TRUE(has_note(r, "resolution: the cohesive zone is at most"));
 }
 
 // The same law on the old default 2 mm elements, given: the run still completes, and now its

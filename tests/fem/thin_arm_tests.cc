@@ -252,11 +252,11 @@ TEST(FemThinArm, StrongShortLawGivesItsWholeRCurve) {
 // J_c 300 J/m^2, zone about 0.58 mm) lost equilibrium right after the first release under
 // load-point opening control. The run now switches to the crack-tip opening control
 // (docs/design.md section 2) and gives its whole R curve. On the short DCB with 0.25 mm elements
-// the zone spans about 2.3 elements and G_ss is measured +0.27 % off J_tip + J_c, R_J vs Eq. 2
-// 0.26 %; 2 % is the issue's bound (the 2, 1, 0.5 mm seed ladder, +7.2, +4.9, +2.7 %, fails it:
-// the error is the unresolved zone, docs/verification.md "Strong short laws"). On the old default
-// 2 mm elements, given, the run completes, must say that the zone is unresolved, and claim no
-// steady state.
+// the zone spans about 2.3 elements (so the run claims no steady state, issue 34) and G_ss is
+// measured +0.27 % off J_tip + J_c, R_J vs Eq. 2 0.26 %; 2 % is the issue's bound (the 2, 1, 0.5 mm
+// seed ladder, +7.2, +4.9, +2.7 %, fails it: the error is the unresolved zone, docs/verification.md
+// "Strong short laws"). On the old default 2 mm elements, given, the run completes, must say that
+// the zone is unresolved, and claim no steady state.
 TEST(FemThinArm, StrongerShorterLawIsTracedPastTheSnapBack) {
   const auto law = law::make_linear_softening(30000 * kPa, 0.02 * mm);
   const double j_tip = 100, G = j_tip + law.area();
@@ -265,7 +265,10 @@ TEST(FemThinArm, StrongerShorterLawIsTracedPastTheSnapBack) {
   prm.mesh.element_size = 0.25 * mm;
   const auto fine = fem::simulate_dcb(fem_test::short_dcb(), specimen::Material(), law, j_tip, prm);
   print(fine);
-  ASSERT_TRUE(fine.reached_steady_state);
+  // The zone spans about 2.3 of these elements, under the zone rule's 3: G_ss is right to 2 %,
+  // but the run claims no steady state (issue 34 item 2), G_ss being the plateau's mean.
+  EXPECT_FALSE(fine.reached_steady_state);
+  EXPECT_EQ(fine.steady_state_status, result::SteadyStateStatus::zone_unresolved);
   EXPECT_TRUE(has_note(fine, "control: at a = "));
   EXPECT_NEAR(fine.G_ss / G, 1.0, 0.02);
   EXPECT_LT(result::rdelta_error_vs_eq2(fine, law, j_tip), 0.02);

@@ -12,20 +12,19 @@
 
 namespace fiberbridge::fem {
 
+// The tunables are defined in source/fem/auto_mesh.cc (extern here, so that tuning them does
+// not recompile the engine, which includes this header through distributed_dcb.h).
+
 /// Never coarser than the old default, 2 mm: the mesh of the seed figures (docs/verification.md;
 /// on the seed DCB with the PVA control law G_ss and R_J within 0.1 %), so a scene that ran on
 /// the default keeps its mesh wherever its arm and its zone allow.
-inline constexpr double kAutoLargestElement = 2e-3;
-/// The cost floor: at most this many elements along the specimen length. On the seed specimen
-/// that is 0.25 mm, the finest level of the verified ladders (docs/verification.md, "Strong short
-/// laws": the 30 MPa / 0.02 mm law within 0.2 % there, about 20 s). A zone that needs finer
-/// elements is run at the floor and flagged by the zone rule (result::note_zone_resolution).
-inline constexpr double kAutoMostElementsAlongLength = 1200;
-/// The element is the estimated zone length over this. The zone rule asks for kMinZoneSpacings
-/// (3) elements in the zone; the measured zones were 0.33 to 1.3 times the estimate
-/// (docs/verification.md, "The automatic mesh"), so a third of 3 elements per estimate's worth
-/// would leave the shortest measured zone at the rule's bound: 10 (rounded up from 9).
-inline constexpr double kAutoElementsPerZoneEstimate = 10;
+extern const double kAutoLargestElement;
+/// The cost floor: at most this many elements along the specimen length (auto_mesh.cc says why).
+/// A zone that needs finer elements is run at the floor and flagged by the zone rule
+/// (result::note_zone_resolution: steady_state_status zone_unresolved).
+extern const double kAutoMostElementsAlongLength;
+/// The element is the estimated zone length over this (auto_mesh.cc says why).
+extern const double kAutoElementsPerZoneEstimate;
 
 /// The mesh a run uses and why (summary.json fem.mesh).
 struct MeshChoice {
@@ -41,7 +40,8 @@ struct MeshChoice {
 /// kMaxCrackPlaneAspect crack-plane layers (arm thickness / Minimum layers per arm) long, at most
 /// a0 / max(5, Tip J domain half-width + 1) (the notch holds the far-field J domain) and at most
 /// (Length - a0 - h) / Tip J domain half-width (the ligament holds the tip J domains) where that
-/// is positive. Needs no law: the scene's input check uses it.
+/// is positive; snapped down to a0 / n (the mesh needs a line at a0), so that the snapped element
+/// keeps these bounds. Needs no law: the scene's input check uses it.
 double arm_element_size(const specimen::Specimen& specimen, const FemParameters& parameters);
 
 /// The element size a mesh is built with: the given FEM/Element size, or arm_element_size for
@@ -63,8 +63,9 @@ double estimated_zone_length(const specimen::Specimen& specimen, const specimen:
 
 /// The mesh of a run: for a given size that size; for auto the smallest of arm_element_size and
 /// the zone estimate over kAutoElementsPerZoneEstimate, not below Length /
-/// kAutoMostElementsAlongLength; the layers through each arm follow from the generated mesh lines
-/// (crack-plane layer min(element, h / Minimum layers per arm), graded by FEM/Grading).
+/// kAutoMostElementsAlongLength (snapped down to a0 / n); the layers through each arm follow from
+/// the generated mesh lines (crack-plane layer min(element, h / Minimum layers per arm), graded by
+/// FEM/Grading).
 MeshChoice choose_mesh(const specimen::Specimen& specimen, const specimen::Material& material,
                        const law::TractionLaw& law, const FemParameters& parameters);
 
