@@ -12,6 +12,7 @@
 #include "fiberbridge/app/section.h"
 #include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
 #include "fiberbridge/fem/dcb_simulation.h"
 #include "fiberbridge/fem/distributed_dcb.h"
 #include "fiberbridge/fem/input_check.h"
@@ -79,6 +80,13 @@ void run_fem_item(SceneContext& ctx) {
   block["time_breakdown_s"] = {{"setup", info.t_setup},         {"assembly", info.t_assemble},
                                {"factorize", info.t_factorize}, {"solve", info.t_solve},
                                {"J_integrals", info.t_j},       {"output", info.t_output}};
+  // The mesh and why (issue 34 item 1): FEM/Element size given, or chosen by auto from the
+  // specimen and the law (fem/auto_mesh.h). layers_per_arm 0: a FEM/Mesh file decides.
+  block["mesh"] = {{"element_size_mm", info.element_size / units::mm},
+                   {"layers_per_arm", info.mesh.layers_per_arm},
+                   {"automatic", info.mesh.automatic},
+                   {"zone_estimate_mm", info.mesh.zone_estimate / units::mm},
+                   {"reason", info.mesh.reason}};
   block["factorizations"] = info.n_factorizations;
   block["newton_iterations"] = info.n_newton;
 }

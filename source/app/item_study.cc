@@ -181,6 +181,8 @@ Json run_stability_case(SceneContext& ctx, const Case& c, const std::string& mod
                         double plateau_tol) {
   std::cerr << "study: stability " << c.name << " with " << model << "\n";
   std::string outcome, diagnosis;
+  // The model's own steady-state status (issue 34): a run that stopped with an exception has none.
+  std::string status = result::to_string(result::SteadyStateStatus::not_reached);
   const auto t0 = std::chrono::steady_clock::now();
   try {
     // A case is its own law, specimen and material (the sections with the case's overrides),
@@ -193,6 +195,7 @@ Json run_stability_case(SceneContext& ctx, const Case& c, const std::string& mod
     bool finite = !r.rcurve.empty();
     for (const auto& p : r.rcurve)
       finite = finite && std::isfinite(p.a) && std::isfinite(p.load);
+    status = result::to_string(r.steady_state_status);
     for (const auto& n : r.notes)
       diagnosis += (diagnosis.empty() ? "" : " | ") + n;
     if (!finite) {
@@ -208,6 +211,7 @@ Json run_stability_case(SceneContext& ctx, const Case& c, const std::string& mod
       if (diagnosis.empty())
         diagnosis = "no steady state and no diagnosis from the model";
     }
+    diagnosis = "steady_state_status " + status + ". " + diagnosis;
   } catch (const std::exception& e) {
     outcome = "diagnosed stop";
     diagnosis = e.what();
@@ -216,8 +220,13 @@ Json run_stability_case(SceneContext& ctx, const Case& c, const std::string& mod
     if (ch == ',' || ch == '\n')
       ch = ';';
   const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return {{"case", c.name},     {"description", c.description}, {"model", model},
-          {"outcome", outcome}, {"diagnosis", diagnosis},       {"wall_time_s", t}};
+  return {{"case", c.name},
+          {"description", c.description},
+          {"model", model},
+          {"outcome", outcome},
+          {"diagnosis", diagnosis},
+          {"wall_time_s", t},
+          {"steady_state_status", status}};
 }
 
 } // namespace

@@ -22,6 +22,7 @@ void report_simulation(SceneContext& ctx, result::SimulationResult r, const std:
                 {"G_ss_law_J_m2", G_ss_law},
                 {"G_ss_rel_error", json_number((r.G_ss - G_ss_law) / G_ss_law)},
                 {"reached_steady_state", r.reached_steady_state},
+                {"steady_state_status", result::to_string(r.steady_state_status)},
                 {"wall_time_s", json_number(r.wall_time_s)},
                 {size_key, r.n_dofs_or_particles},
                 {"rdelta_rel_error_vs_eq2", json_number(r.rdelta_rel_error_vs_eq2)},

@@ -47,6 +47,7 @@ Json result_to_json(const result::SimulationResult& r) {
           {"rcurve", std::move(rows)},
           {"G_ss", r.G_ss},
           {"reached_steady_state", r.reached_steady_state},
+          {"steady_state_status", result::to_string(r.steady_state_status)},
           {"wall_time_s", r.wall_time_s},
           {"n_dofs_or_particles", r.n_dofs_or_particles},
           {"rdelta_rel_error_vs_eq2", r.rdelta_rel_error_vs_eq2},
@@ -66,6 +67,12 @@ result::SimulationResult result_from_json(const Json& j) {
   }
   r.G_ss = j.at("G_ss").get<double>();
   r.reached_steady_state = j.at("reached_steady_state").get<bool>();
+  // A record written before issue 34 has no status: the flag was the whole claim then.
+  r.steady_state_status =
+      j.contains("steady_state_status")
+          ? result::steady_state_status_from_string(j.at("steady_state_status").get<std::string>())
+          : (r.reached_steady_state ? result::SteadyStateStatus::resolved
+                                    : result::SteadyStateStatus::not_reached);
   r.wall_time_s = j.at("wall_time_s").get<double>();
   r.n_dofs_or_particles = j.at("n_dofs_or_particles").get<long>();
   r.rdelta_rel_error_vs_eq2 = j.at("rdelta_rel_error_vs_eq2").get<double>();

@@ -681,6 +681,7 @@ SimulationResult DcbBeamSolver::run() {
     steady = result::find_steady_state(result.rcurve, a0, arm_.width, bridging, rule);
   if (shortest_zone < 4 * step_length) {
     result.reached_steady_state = false;
+    result.steady_state_status = result::SteadyStateStatus::zone_unresolved;
     result.G_ss = result::not_available;
     const double wanted =
         std::ceil(8 * h_e / std::max(shortest_zone, 0.01 * h_e) * prm_.n_elements);

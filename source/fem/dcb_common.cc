@@ -2,6 +2,7 @@
 
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
+#include "fiberbridge/fem/auto_mesh.h"
 #include "fiberbridge/law/rigid_law.h"
 
 #include <deal.II/lac/full_matrix.h>
@@ -71,7 +72,8 @@ SymmetricTensor<4, 3> orthotropic_stiffness<3>(const specimen::Material& m,
 
 double crack_plane_step(const specimen::Specimen& specimen, const FemParameters& p) {
   const double a0 = specimen.initial_crack;
-  const unsigned n_a0 = std::max(1u, unsigned(std::lround(a0 / p.mesh.element_size)));
+  // auto: the law-free part of the choice (fem::choose_mesh gives the engine a number).
+  const unsigned n_a0 = std::max(1u, unsigned(std::lround(a0 / element_length(specimen, p))));
   if (n_a0 < std::max(5u, p.j_domain.half_width_elements + 1))
     throw InputError("Specimen/Initial crack: the notch must span at least " +
                      std::to_string(std::max(5u, p.j_domain.half_width_elements + 1)) +
@@ -133,20 +135,21 @@ double q1_bending_indicator(const specimen::Material& material, double element_l
 unsigned resolve_degree(const specimen::Specimen& specimen, const specimen::Material& material,
                         const FemParameters& p, std::vector<std::string>& notes) {
   const double h = specimen.arm_thickness();
-  const double indicator = q1_bending_indicator(material, p.mesh.element_size, h);
+  const double size = element_length(specimen, p);
+  const double indicator = q1_bending_indicator(material, size, h);
   if (p.mesh.degree == 0) {
     const unsigned degree = indicator > kQ1BendingBound ? 2 : 1;
     if (degree == 2)
       notes.push_back("FEM/Polynomial degree = auto chose Q2: Q1 elements " +
-                      fmt(p.mesh.element_size / units::mm) + " mm long on arms " +
-                      fmt(h / units::mm) + " mm thick would bend too stiffly (parasitic shear " +
+                      fmt(size / units::mm) + " mm long on arms " + fmt(h / units::mm) +
+                      " mm thick would bend too stiffly (parasitic shear " +
                       "(G_LT/E_L)(element/arm)^2 = " + fmt(indicator, 3) + " > " +
                       fmt(kQ1BendingBound) + ")");
     return degree;
   }
   if (p.mesh.degree == 1 && indicator > kQ1BendingBound)
     notes.push_back(
-        "resolution: Q1 elements " + fmt(p.mesh.element_size / units::mm) + " mm long on arms " +
+        "resolution: Q1 elements " + fmt(size / units::mm) + " mm long on arms " +
         fmt(h / units::mm) +
         " mm thick bend too stiffly (parasitic shear (G_LT/E_L)(element/arm)^2 = " +
         fmt(indicator, 3) + " > " + fmt(kQ1BendingBound) + ", a load about " +

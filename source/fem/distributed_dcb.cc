@@ -5,6 +5,9 @@
 #include "fiberbridge/fem/distributed_dcb.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
+#include "fiberbridge/fem/auto_mesh.h"
+#include "fiberbridge/fem/dcb_common.h"
 #include "fiberbridge/result/numerical_fault.h"
 
 namespace fiberbridge::fem {
@@ -29,13 +32,27 @@ simulate_dcb_distributed(const specimen::Specimen& specimen, const specimen::Mat
   FemRunDetails local_details;
   DistributedRunInfo& i = info ? *info : local_info;
   FemRunDetails& d = details ? *details : local_details;
+  // FEM/Element size = auto is resolved here, before the mesh is built (issue 34): the engine
+  // only ever sees a number. Plain arithmetic on the scene's values: every rank chooses the same.
+  const MeshChoice mesh = choose_mesh(specimen, material, law, parameters);
+  const FemParameters resolved = with_mesh(parameters, mesh);
+  result::SimulationResult r;
   if (parameters.mesh.dimension == 3)
-    return distributed::run_distributed<3>(specimen, material, law, j_tip, parameters, output_dir,
-                                           progress, comm, i, d);
-  if (parameters.mesh.dimension == 2)
-    return distributed::run_distributed<2>(specimen, material, law, j_tip, parameters, output_dir,
-                                           progress, comm, i, d);
-  throw InputError("FEM/Dimension: must be 2 or 3");
+    r = distributed::run_distributed<3>(specimen, material, law, j_tip, resolved, output_dir,
+                                        progress, comm, i, d);
+  else if (parameters.mesh.dimension == 2)
+    r = distributed::run_distributed<2>(specimen, material, law, j_tip, resolved, output_dir,
+                                        progress, comm, i, d);
+  else
+    throw InputError("FEM/Dimension: must be 2 or 3");
+  i.mesh = mesh;
+  i.element_size = crack_plane_step(specimen, resolved); // the step the mesh was built with
+  r.method.push_back("mesh: " + fmt(i.element_size / units::mm, 4) + " mm crack-plane elements" +
+                     (mesh.layers_per_arm > 0
+                          ? ", " + std::to_string(mesh.layers_per_arm) + " layers per arm"
+                          : std::string(" (FEM/Mesh file)")) +
+                     "; " + mesh.reason);
+  return r;
 }
 
 result::SimulationResult simulate_dcb(const specimen::Specimen& specimen,

@@ -4,6 +4,7 @@
 #include "fiberbridge/fem/dcb_simulation.h"
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,15 +23,35 @@ void require(bool ok, const char* key, const char* what) {
     throw InputError(std::string("FEM/") + key + ": " + what);
 }
 
+/// A length in mm (Double(0)) or "auto". A pattern, not Anything: a bad value fails where it
+/// is set (a study ladder's level names its ladder, as with Double(0) before auto).
+class SizeOrAuto : public dealii::Patterns::PatternBase {
+public:
+  bool match(const std::string& text) const override {
+    return text == "auto" || Double(0).match(text);
+  }
+  std::string description(const OutputStyle style = Machine) const override {
+    // Machine style as Anything's, which deal.II's pattern_factory can read back.
+    return style == Machine ? "[Anything]" : "A non-negative number or auto";
+  }
+  std::unique_ptr<dealii::Patterns::PatternBase> clone() const override {
+    return std::make_unique<SizeOrAuto>();
+  }
+};
+
 /// The declared default of Steady state window [mm]: a scene that writes another text gives the
 /// key (resolve_renamed).
 constexpr const char* default_window_mm = "10";
 } // namespace
 
 void FemParameters::Mesh::declare_parameters(dealii::ParameterHandler& prm) {
-  prm.declare_entry("Element size", "2.0", Double(0),
+  prm.declare_entry("Element size", "auto", SizeOrAuto(),
                     "Element length along the crack plane [mm]; also the tip advance per "
-                    "release. Uniform over the whole beam length.");
+                    "release. Uniform over the whole beam length. auto (the default): chosen per "
+                    "run from the arm (at most 2 mm, at most 4 crack-plane layers long, the notch "
+                    "and ligament) and the law (an estimated cohesive zone length over 8, not "
+                    "below Length/600); summary.json fem.mesh says what was chosen and why. A "
+                    "number is used as given.");
   prm.declare_entry("Grading", "1.3", Double(1),
                     "Growth ratio of element heights from the crack plane (where elements are "
                     "square) towards the beam faces.");
@@ -65,7 +86,8 @@ void FemParameters::Mesh::declare_parameters(dealii::ParameterHandler& prm) {
 }
 
 void FemParameters::Mesh::parse_parameters(dealii::ParameterHandler& prm) {
-  element_size = prm.get_double("Element size") * units::mm;
+  element_size =
+      prm.get("Element size") == "auto" ? automatic : prm.get_double("Element size") * units::mm;
   grading = prm.get_double("Grading");
   min_layers = prm.get_integer("Minimum layers per arm");
   degree = prm.get("Polynomial degree") == "auto" ? 0 : prm.get_integer("Polynomial degree");
@@ -76,7 +98,7 @@ void FemParameters::Mesh::parse_parameters(dealii::ParameterHandler& prm) {
 }
 
 void FemParameters::Mesh::validate() const {
-  require(element_size > 0, "Element size", "must be positive (mm)");
+  require(element_size > 0 || automatic_size(), "Element size", "must be positive (mm) or auto");
   require(grading >= 1, "Grading", "must be >= 1");
   require(min_layers >= 1, "Minimum layers per arm", "must be >= 1");
   require(degree <= 2, "Polynomial degree", "must be 1, 2 or auto");

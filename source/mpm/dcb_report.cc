@@ -122,10 +122,11 @@ void DcbModel::finish(result::SimulationResult& r) const {
   constexpr double kLedgerResidualBound = 0.05;
   if (std::abs(ledger_residual) > kLedgerResidualBound)
     result::withdraw_steady_state(
-        r, "the energy ledger does not close (residual " + fmt(100 * ledger_residual, 3) +
-               " % of the work, more than " + fmt(100 * kLedgerResidualBound) +
-               " %: the crack-plane tractions are not resolved; a law much stronger and shorter "
-               "than the cells resolve, refine MPM/Cell size)");
+        r, result::SteadyStateStatus::ledger_open,
+        "the energy ledger does not close (residual " + fmt(100 * ledger_residual, 3) +
+            " % of the work, more than " + fmt(100 * kLedgerResidualBound) +
+            " %: the crack-plane tractions are not resolved; a law much stronger and shorter "
+            "than the cells resolve, refine MPM/Cell size)");
 }
 
 } // namespace fiberbridge::mpm

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace fiberbridge::result {
 
@@ -25,6 +26,28 @@ void write_rcurve_csv(const std::string& path, const SimulationResult& r) {
            p.load_point_opening / mm, p.root / mm, p.zone_length / mm, p.J_tip, p.external_work,
            p.strain_energy, p.zone_recoverable, p.dissipated, p.kinetic_energy, p.time});
   w.close();
+}
+
+std::string to_string(SteadyStateStatus status) {
+  switch (status) {
+  case SteadyStateStatus::resolved:
+    return "resolved";
+  case SteadyStateStatus::not_reached:
+    return "not_reached";
+  case SteadyStateStatus::zone_unresolved:
+    return "zone_unresolved";
+  case SteadyStateStatus::ledger_open:
+    return "ledger_open";
+  }
+  return "not_reached";
+}
+
+SteadyStateStatus steady_state_status_from_string(const std::string& name) {
+  for (const auto s : {SteadyStateStatus::resolved, SteadyStateStatus::not_reached,
+                       SteadyStateStatus::zone_unresolved, SteadyStateStatus::ledger_open})
+    if (to_string(s) == name)
+      return s;
+  throw std::invalid_argument("unknown steady_state_status '" + name + "'");
 }
 
 double rdelta_error_vs_eq2(const SimulationResult& r, const law::TractionLaw& law, double j_tip) {
@@ -56,26 +79,36 @@ double note_zone_resolution(SimulationResult& result, double spacing,
   const double mm = units::mm;
   const double n = zone / spacing - reading_offset;
   const double resolved = std::max(n, 0.0) * spacing;
-  if (n < kMinZoneSpacings)
-    result.notes.push_back(
-        "resolution: the cohesive zone is at most " + fmt(zone / mm, 3) +
-        " mm long (at a = " + fmt(zone_a / mm) + " mm)" +
-        (reading_offset > 0 ? ", of which about " + fmt(reading_offset) + " " + spacing_name +
-                                  " are the model's reading of the root, so"
-                            : ",") +
-        " " + fmt(std::max(n, 0.0), 2) + " " + spacing_name + " of " + fmt(spacing / mm, 3) +
-        " mm, fewer than the " + fmt(kMinZoneSpacings) +
-        " a cohesive zone needs: the energy released per advance and the rise of the R curve are "
-        "coarse here, and G_ss may be off; " +
-        key + " at most " + fmt(std::max(resolved, 0.0) / kMinZoneSpacings / mm, 3) +
-        " mm would resolve the zone read here" + (resolved > 0 ? "" : " (none: refine and rerun)"));
+  if (n >= kMinZoneSpacings)
+    return n;
+  result.notes.push_back(
+      "resolution: the cohesive zone is at most " + fmt(zone / mm, 3) +
+      " mm long (at a = " + fmt(zone_a / mm) + " mm)" +
+      (reading_offset > 0 ? ", of which about " + fmt(reading_offset) + " " + spacing_name +
+                                " are the model's reading of the root, so"
+                          : ",") +
+      " " + fmt(std::max(n, 0.0), 2) + " " + spacing_name + " of " + fmt(spacing / mm, 3) +
+      " mm, fewer than the " + fmt(kMinZoneSpacings) +
+      " a cohesive zone needs: the energy released per advance and the rise of the R curve are "
+      "coarse here, and G_ss may be off; " +
+      key + " at most " + fmt(std::max(resolved, 0.0) / kMinZoneSpacings / mm, 3) +
+      " mm would resolve the zone read here" + (resolved > 0 ? "" : " (none: refine and rerun)"));
+  withdraw_steady_state(result, SteadyStateStatus::zone_unresolved,
+                        "the cohesive zone spans " + fmt(std::max(n, 0.0), 2) + " " + spacing_name +
+                            ", fewer than " + fmt(kMinZoneSpacings) + " (see the resolution note)");
   return n;
 }
 
-void withdraw_steady_state(SimulationResult& result, const std::string& reason) {
-  if (!result.reached_steady_state)
-    return;
+void withdraw_steady_state(SimulationResult& result, SteadyStateStatus status,
+                           const std::string& reason) {
+  if (result.steady_state_status != SteadyStateStatus::resolved &&
+      result.steady_state_status != SteadyStateStatus::not_reached)
+    return; // the first unsoundness found is the one reported
+  const bool claimed = result.reached_steady_state;
   result.reached_steady_state = false;
+  result.steady_state_status = status;
+  if (!claimed)
+    return;
   const std::string claim = "steady state: ";
   for (auto& n : result.notes)
     if (n.rfind(claim, 0) == 0)

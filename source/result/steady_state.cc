@@ -108,6 +108,8 @@ void report_steady_state(SimulationResult& result, const SteadyState& s,
                          const SteadyStateRule& rule, const std::string& section) {
   using units::mm;
   result.reached_steady_state = s.reached;
+  result.steady_state_status =
+      s.reached ? SteadyStateStatus::resolved : SteadyStateStatus::not_reached;
   result.G_ss = s.G_ss;
   const auto& rc = result.rcurve;
   const std::string left_out =

@@ -337,7 +337,15 @@ TEST(MpmDcbPropagation, LinearSofteningZoneDevelopsAndReachesSteadyState) {
     EXPECT_NEAR(p.R_eq2, std::min(G_ss, 200 + 0.5 * sc * std::min(p.delta_root, dc)), 1e-9 * G_ss);
   }
   EXPECT_TRUE(root_moved);
-  EXPECT_TRUE(r.reached_steady_state);
+  // Issue 34: at these 2.5 mm cells the zone reads fewer than the 3 cells the zone rule asks for
+  // once the MPM's 2-cell root reading is taken off (result::note_zone_resolution), so the run
+  // claims no steady state (status zone_unresolved) although R_J has its plateau; G_ss is that
+  // plateau's mean.
+  EXPECT_FALSE(r.reached_steady_state);
+  EXPECT_EQ(r.steady_state_status, result::SteadyStateStatus::zone_unresolved);
+  for (const auto& n : r.notes)
+    if (n.rfind("resolution:", 0) == 0 || n.rfind("no steady state", 0) == 0)
+      std::printf("linear: note: %s\n", n.c_str());
   std::printf("linear: G_ss %.1f (law %.1f), rdelta error %.3f\n", r.G_ss, G_ss,
               r.rdelta_rel_error_vs_eq2);
   // Energy balance with a zone: the residual W - U - K - U_zone - D is the law's work that the

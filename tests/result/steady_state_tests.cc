@@ -106,8 +106,21 @@ TEST(RCurvePost, ExcludedAdvancesLeaveThePlateauButDoNotEndIt) {
   result.rcurve = rc;
   report_steady_state(result, s, rule, "MPM");
   EXPECT_TRUE(result.reached_steady_state);
+  EXPECT_EQ(result.steady_state_status, SteadyStateStatus::resolved);
   EXPECT_DOUBLE_EQ(result.G_ss, 300.0);
   ASSERT_EQ(result.notes.size(), 1u);
   EXPECT_NE(result.notes[0].find("MPM/Plateau tolerance"), std::string::npos);
   EXPECT_NE(result.notes[0].find("2 advance(s) left out"), std::string::npos);
+}
+
+// The status of a run the rule did not pass (issue 34 item 2): not_reached, the flag false, also
+// after a flag set by an earlier evaluation.
+TEST(SteadyStateRule, NotReachedGivesItsStatus) {
+  SimulationResult result;
+  result.reached_steady_state = true;
+  result.steady_state_status = SteadyStateStatus::resolved;
+  SteadyState s; // the root never moved
+  report_steady_state(result, s, SteadyStateRule{}, "Beam");
+  EXPECT_FALSE(result.reached_steady_state);
+  EXPECT_EQ(result.steady_state_status, SteadyStateStatus::not_reached);
 }

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 namespace fiberbridge::result {
 namespace {
 
@@ -77,20 +79,84 @@ TEST(SteadyStateClaim, WithdrawnWithItsReasonAndThePlateauKept) {
   r.G_ss = 459.8;
   r.notes.push_back("resolution: kept");
   r.notes.push_back("steady state: R_J within 2.88 % over the last 15 mm");
-  withdraw_steady_state(r, "the energy ledger does not close");
+  r.steady_state_status = SteadyStateStatus::resolved;
+  withdraw_steady_state(r, SteadyStateStatus::ledger_open, "the energy ledger does not close");
   EXPECT_FALSE(r.reached_steady_state);
+  EXPECT_EQ(r.steady_state_status, SteadyStateStatus::ledger_open);
   EXPECT_DOUBLE_EQ(r.G_ss, 459.8);
   ASSERT_EQ(r.notes.size(), 2u);
   EXPECT_EQ(r.notes[0], "resolution: kept");
   EXPECT_EQ(r.notes[1], "no steady state claimed: the energy ledger does not close; the plateau "
                         "of R_J (G_ss = 459.8 J/m^2 is its mean) need not be the law's. R_J within "
                         "2.88 % over the last 15 mm");
-  // A run without the claim is left as it is.
+  // A run without the claim keeps its notes; its status says what was found unsound.
   SimulationResult none = with_zones({12.5});
   none.notes.push_back("no steady state: the notch root did not move");
-  withdraw_steady_state(none, "anything");
+  withdraw_steady_state(none, SteadyStateStatus::ledger_open, "anything");
   EXPECT_FALSE(none.reached_steady_state);
+  EXPECT_EQ(none.steady_state_status, SteadyStateStatus::ledger_open);
   EXPECT_EQ(none.notes[0], "no steady state: the notch root did not move");
+}
+
+// Issue 34 item 2: the status a script reads. The stable names of docs/design.md section 5.
+TEST(SteadyStateStatus, StableNames) {
+  EXPECT_EQ(to_string(SteadyStateStatus::resolved), "resolved");
+  EXPECT_EQ(to_string(SteadyStateStatus::not_reached), "not_reached");
+  EXPECT_EQ(to_string(SteadyStateStatus::zone_unresolved), "zone_unresolved");
+  EXPECT_EQ(to_string(SteadyStateStatus::ledger_open), "ledger_open");
+  EXPECT_EQ(SimulationResult{}.steady_state_status, SteadyStateStatus::not_reached);
+  for (const auto s : {SteadyStateStatus::resolved, SteadyStateStatus::not_reached,
+                       SteadyStateStatus::zone_unresolved, SteadyStateStatus::ledger_open})
+    EXPECT_EQ(steady_state_status_from_string(to_string(s)), s);
+  EXPECT_THROW(steady_state_status_from_string("converged"), std::invalid_argument);
+}
+
+// The issue's case: a 20 MPa / 0.05 mm law on 2 mm elements claimed steady state while its note
+// said the zone spans 0.65 elements. The zone rule now withdraws the claim: flag false, status
+// zone_unresolved, the plateau's G_ss kept and the steady-state note rewritten.
+TEST(SteadyStateStatus, UnresolvedZoneWithdrawsTheClaim) {
+  SimulationResult r = with_zones({1.3, 1.3});
+  r.reached_steady_state = true;
+  r.steady_state_status = SteadyStateStatus::resolved;
+  r.G_ss = 617.9;
+  r.notes.push_back("steady state: R_J within 0.1 %");
+  EXPECT_NEAR(note_zone_resolution(r, 2 * mm, "elements", "FEM/Element size"), 0.65, 1e-12);
+  EXPECT_FALSE(r.reached_steady_state);
+  EXPECT_EQ(r.steady_state_status, SteadyStateStatus::zone_unresolved);
+  EXPECT_DOUBLE_EQ(r.G_ss, 617.9);
+  ASSERT_EQ(r.notes.size(), 2u);
+  EXPECT_EQ(r.notes[0].rfind("no steady state claimed: the cohesive zone spans 0.65 elements", 0),
+            0u)
+      << r.notes[0];
+  EXPECT_EQ(r.notes[1].rfind("resolution: the cohesive zone is at most 1.3 mm long", 0), 0u);
+
+  // A resolved zone leaves the claim alone.
+  SimulationResult ok = with_zones({10, 30});
+  ok.reached_steady_state = true;
+  ok.steady_state_status = SteadyStateStatus::resolved;
+  note_zone_resolution(ok, 2 * mm, "elements", "FEM/Element size");
+  EXPECT_TRUE(ok.reached_steady_state);
+  EXPECT_EQ(ok.steady_state_status, SteadyStateStatus::resolved);
+
+  // No plateau and an unresolved zone: the flag stays false, the status says to refine.
+  SimulationResult flat = with_zones({1.0});
+  note_zone_resolution(flat, 2 * mm, "elements", "FEM/Element size");
+  EXPECT_FALSE(flat.reached_steady_state);
+  EXPECT_EQ(flat.steady_state_status, SteadyStateStatus::zone_unresolved);
+}
+
+// The first unsoundness found is the one reported: the MPM checks its ledger before the zone.
+TEST(SteadyStateStatus, FirstUnsoundnessIsKept) {
+  SimulationResult r = with_zones({1.0});
+  r.reached_steady_state = true;
+  r.steady_state_status = SteadyStateStatus::resolved;
+  r.notes.push_back("steady state: R_J within 0.1 %");
+  withdraw_steady_state(r, SteadyStateStatus::ledger_open, "the energy ledger does not close");
+  note_zone_resolution(r, 5 * mm, "cells", "MPM/Cell size");
+  EXPECT_EQ(r.steady_state_status, SteadyStateStatus::ledger_open);
+  EXPECT_FALSE(r.reached_steady_state);
+  EXPECT_EQ(r.notes[0].rfind("no steady state claimed: the energy ledger does not close", 0), 0u)
+      << r.notes[0];
 }
 
 } // namespace

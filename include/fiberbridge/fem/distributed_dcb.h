@@ -9,6 +9,7 @@
 // vertical displacement of the whole load-line end face of each arm (a rigid loading block free to
 // rotate about z). The crack front is straight through the width: ties are released one row of
 // crack-plane faces at a time, and the tip criterion is the width-averaged domain J.
+#include "fiberbridge/fem/auto_mesh.h"
 #include "fiberbridge/fem/dcb_simulation.h"
 
 #include <mpi.h>
@@ -30,6 +31,9 @@ struct DistributedRunInfo {
   unsigned n_linear_solves = 0;
   unsigned n_newton = 0;
   double t_setup = 0, t_assemble = 0, t_factorize = 0, t_solve = 0, t_j = 0, t_output = 0;
+  /// The mesh of the run and why (FEM/Element size given or auto; fem/auto_mesh.h).
+  MeshChoice mesh;
+  double element_size = 0; ///< the crack-plane element after the snap to the notch [m]
 };
 
 /// Runs the model of simulate_dcb() on the ranks of `comm` (every rank calls it and gets the

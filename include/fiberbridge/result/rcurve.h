@@ -34,11 +34,26 @@ struct RCurvePoint {
   double time = not_available;               ///< simulated time (dynamic models) [s]
 };
 
+/// Why a run does or does not claim a steady state (summary.json `steady_state_status`, the
+/// studies' stability tables; docs/design.md section 2, "Steady state and G_ss"). Only `resolved`
+/// goes with reached_steady_state = true.
+enum class SteadyStateStatus {
+  resolved,        ///< the plateau rule passed and nothing in the run contradicts it
+  not_reached,     ///< no plateau: the root did not move, or R_J did not settle over the window
+  zone_unresolved, ///< the cohesive zone spans fewer crack-plane spacings than kMinZoneSpacings
+  ledger_open      ///< the run's energy ledger does not close
+};
+/// "resolved", "not_reached", "zone_unresolved", "ledger_open" (the stable names of section 5).
+std::string to_string(SteadyStateStatus status);
+/// The inverse of to_string; throws std::invalid_argument on any other text.
+SteadyStateStatus steady_state_status_from_string(const std::string& name);
+
 struct SimulationResult {
   std::string model; ///< "fem", "mpm", "beam"
   std::vector<RCurvePoint> rcurve;
-  double G_ss = not_available; ///< plateau of R_energy (or R_J) once the root moves [J/m^2]
-  bool reached_steady_state = false;
+  double G_ss = not_available;       ///< plateau of R_energy (or R_J) once the root moves [J/m^2]
+  bool reached_steady_state = false; ///< true only with steady_state_status resolved
+  SteadyStateStatus steady_state_status = SteadyStateStatus::not_reached;
   double wall_time_s = not_available;
   long n_dofs_or_particles = 0;
   double rdelta_rel_error_vs_eq2 = not_available; ///< relative L2 of R_J vs Eq. 2 where law known
@@ -69,15 +84,20 @@ inline constexpr double kMinZoneSpacings = 3;
 /// model's zone reading holds even for a zone of length zero, subtracted first (the MPM reads
 /// its root two cells or more behind the tip however short the zone, source/mpm/dcb.cc).
 /// Returns the zone's length in spacings after that (0 without a zone). One rule for the FEM and
-/// the MPM.
+/// the MPM: a zone under kMinZoneSpacings also withdraws the steady state
+/// (withdraw_steady_state with SteadyStateStatus::zone_unresolved), since the note says G_ss may
+/// be off and a flag that a script reads must not contradict it.
 double note_zone_resolution(SimulationResult& result, double spacing,
                             const std::string& spacing_name, const std::string& key,
                             double reading_offset = 0);
 
-/// A model that finds its own run unsound after the steady-state rule passed (the MPM: an
-/// energy ledger that does not close) withdraws the claim: reached_steady_state becomes false,
-/// G_ss keeps the plateau's mean, and the steady-state note starts with "no steady state
-/// claimed: " and `reason`. Nothing when the run did not claim steady state.
-void withdraw_steady_state(SimulationResult& result, const std::string& reason);
+/// A model that finds its own run unsound (the MPM: an energy ledger that does not close; any
+/// model: an unresolved zone) withdraws the claim: reached_steady_state becomes false and
+/// steady_state_status `status` (zone_unresolved or ledger_open), G_ss keeps the plateau's mean,
+/// and the steady-state note starts with "no steady state claimed: " and `reason`. A run that
+/// claimed nothing (not_reached) gets `status` too, since it says what to fix; the first
+/// unsoundness found is kept (a later call changes nothing).
+void withdraw_steady_state(SimulationResult& result, SteadyStateStatus status,
+                           const std::string& reason);
 
 } // namespace fiberbridge::result
