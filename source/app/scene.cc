@@ -31,6 +31,7 @@ const std::vector<SceneItem>& scene_items() {
       {"fit", &declare_fit_section, &check_fit_item, &run_fit_item},
       {"rank", &declare_rank_section, &check_rank_item, &run_rank_item},
       {"bridging", &declare_bridging_section, &check_bridging_item, &run_bridging_item},
+      {"campaign", &declare_campaign_section, &check_campaign_item, &run_campaign_item},
 #ifdef FIBERBRIDGE_HAVE_BEAM
       {"beam", &declare_beam_section, &check_beam_item, &run_beam_item},
 #endif
@@ -49,7 +50,7 @@ const std::vector<SceneItem>& scene_items() {
 namespace {
 
 const char* all_item_names =
-    "reduce, identify, extract, fit, rank, bridging, fem, mpm, beam, compare, study";
+    "reduce, identify, extract, fit, rank, bridging, campaign, fem, mpm, beam, compare, study";
 
 void declare_everything(dealii::ParameterHandler& prm) {
   prm.declare_entry("Output directory", "output", dealii::Patterns::Anything(),
