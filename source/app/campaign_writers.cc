@@ -569,6 +569,17 @@ void write_html(const CampaignResult& r, const CampaignWriteOptions& w,
                     cell(p.p_first_ahead, 3), cell(p.p_tie, 3), cell(p.p_second_ahead, 3)});
   h += html_table({"order", "holds", "tie", "reversed"}, rows) + "<p>Fractions of " +
        std::to_string(r.ranking.samples) + " bootstrap samples.</p>\n";
+  if (!w.simulations.empty()) {
+    rows.clear();
+    for (const auto& s : w.simulations)
+      rows.push_back({html_escape(s.material), fmt(s.cycles), s.model,
+                      s.ran ? cell(s.misfit_rel, 3) : html_escape(s.failure),
+                      cell(s.within_scatter, 3), cell(s.G_ss, 4), cell(s.wall_time_s, 3)});
+    h += "<h2>The laws back in the specimen (Fig. 10)</h2>\n" +
+         html_table({"material", "cycles", "model", "misfit (RMS / G_B)",
+                     "within 2 std of the specimens", "simulated G_ss (J/m^2)", "time (s)"},
+                    rows);
+  }
   // Plots
   h += "<h2>Plots</h2>\n";
   for (const auto& p : pngs)
@@ -698,9 +709,12 @@ void write_campaign_outputs(const CampaignResult& r, const CampaignWriteOptions&
                                  "campaign_ranking_confidence.csv"};
   for (const auto& f : write_group_laws(r, w.fe_export, out_dir))
     files.push_back(f);
-  const auto pngs = write_plots(r, out_dir);
+  auto pngs = write_plots(r, out_dir);
+  for (const auto& p : w.simulation_pngs)
+    pngs.push_back(p);
   write_html(r, w, pngs, files, out_dir);
   summary["campaign"] = summary_block(r, w);
+  add_campaign_simulation_summary(r, w.simulations, summary);
   for (const auto& p : pngs)
     summary["plots"].push_back(p);
 }

@@ -6,6 +6,7 @@
 // the options and its own seed, so 1 and N ranks give the same tables.
 #include "fiberbridge/analysis/campaign_run.h"
 #include "fiberbridge/app/analysis_steps.h"
+#include "fiberbridge/app/campaign_simulation.h"
 #include "fiberbridge/app/campaign_writers.h"
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/scene.h"
@@ -19,6 +20,7 @@
 
 #include <deal.II/base/patterns.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -43,6 +45,8 @@ struct CampaignSection {
   std::vector<std::string> reference_materials;
   double outlier_mads = 3.5;
   bool fe_export = true;
+  bool simulate = false;
+  std::string model;
 
   static void declare_parameters(dealii::ParameterHandler& prm) {
     prm.declare_entry("Manifest", "", dealii::Patterns::Anything(),
@@ -67,6 +71,13 @@ struct CampaignSection {
                       "many robust standard deviations (1.4826 MAD) from the group's median.");
     prm.declare_entry("FE export", "true", dealii::Patterns::Bool(),
                       "Write each group's trilinear law for LS-DYNA (MAT_186) and Abaqus.");
+    prm.declare_entry("Simulate laws", "false", dealii::Patterns::Bool(),
+                      "Put each group's law back in the specimen (the paper's Fig. 10): the "
+                      "simulated R(delta_root) against the group's measured curves, misfit per "
+                      "group. Uses the Specimen, Material and the model's section.");
+    prm.declare_entry("Simulation model", "auto", dealii::Patterns::Anything(),
+                      "Model for Simulate laws: auto (the first of this build's models that can: "
+                      "beam) or a model's name (beam).");
   }
   void parse_parameters(dealii::ParameterHandler& prm) {
     manifest = prm.get("Manifest");
@@ -76,6 +87,21 @@ struct CampaignSection {
     expanded = prm.get("Interval") == "expanded percentile";
     outlier_mads = prm.get_double("Outlier threshold");
     fe_export = prm.get_bool("FE export");
+    simulate = prm.get_bool("Simulate laws");
+    model = prm.get("Simulation model");
+    const auto models = campaign_simulation_models();
+    if (simulate) {
+      if (model == "auto" && !models.empty())
+        model = models.front();
+      if (std::find(models.begin(), models.end(), model) == models.end()) {
+        std::string have;
+        for (const auto& m : models)
+          have += (have.empty() ? "" : ", ") + m;
+        throw InputError("Campaign/Simulation model: '" + model +
+                         "' cannot put the laws back in the specimen in this build (available: " +
+                         (have.empty() ? std::string("none") : have) + ")");
+      }
+    }
     std::stringstream in(prm.get("Reference materials"));
     std::string m;
     while (std::getline(in, m, ',')) {
@@ -301,8 +327,12 @@ void run_campaign_item(SceneContext& ctx) {
   CampaignWriteOptions w;
   w.fe_export = in.section.fe_export;
   w.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (in.section.simulate)
+    w.simulations = simulate_campaign_laws(ctx, result, in.section.model);
   // Everything is computed before the first file is written: a campaign that fails leaves no
   // table behind (and no summary.json, scene.cc).
+  if (!w.simulations.empty())
+    w.simulation_pngs = write_campaign_simulation_files(result, w.simulations, ctx.output_dir);
   write_campaign_outputs(result, w, ctx.output_dir, ctx.summary);
   ctx.summary["campaign"]["ranks"] = ranks;
 }

@@ -5,6 +5,7 @@
 // degradation and ranking tables, each group's law with its band and as LS-DYNA / Abaqus input,
 // gnuplot PNGs, campaign_report.html and the summary block `campaign`. Nothing is computed here.
 #include "fiberbridge/analysis/campaign_run.h"
+#include "fiberbridge/app/campaign_simulation.h"
 #include "fiberbridge/core/summary.h"
 
 #include <string>
@@ -14,6 +15,10 @@ namespace fiberbridge::app {
 struct CampaignWriteOptions {
   bool fe_export = true; ///< LS-DYNA and Abaqus cards per group with a law
   double seconds = 0;    ///< wall time of the analysis (for the report)
+  /// The laws back in the specimen (empty when not simulated) and their PNGs, for the tables,
+  /// the report and the summary.
+  std::vector<GroupSimulation> simulations;
+  std::vector<std::string> simulation_pngs;
 };
 
 void write_campaign_outputs(const analysis::CampaignResult& r, const CampaignWriteOptions& w,
