@@ -372,3 +372,93 @@ TEST(CohesiveExport, AbaqusTableKeepsAreaAndPeak) {
     EXPECT_NE(inp.find("*ELASTIC, TYPE=TRACTION"), std::string::npos);
   }
 }
+
+// l_b (crack growth to the peak-stress opening d1, seed section 3.4) where the R(delta) files
+// carry crack lengths, and the rho_b range from it: a group whose files have a_mm = 100 + 67
+// delta_mm gives l_b = 6.7 mm (the seed's PVA control) whatever the specimen.
+TEST(CampaignGroup, ZoneLengthFromCrackLengthsAndTheDensityRange) {
+  const fs::path d = scratch("lb");
+  const auto truth = table1_truth(read_property_table(table1));
+  SyntheticCampaignOptions so;
+  so.replicates = 3;
+  const std::string m = write_synthetic_campaign(d.string(), {truth[0]}, so);
+  // Add a crack-length column to every file (same rows, a linear in delta).
+  for (int k = 1; k <= 3; ++k) {
+    const fs::path f = d / ("PVA_c0_s" + std::to_string(k) + ".csv");
+    std::ifstream in(f);
+    std::string line, out;
+    while (std::getline(in, line)) {
+      if (line.empty() || line[0] == '#')
+        out += line + "\n";
+      else if (line.rfind("replicate", 0) == 0)
+        out += line + ",a_mm\n";
+      else {
+        const double delta_mm = std::stod(line.substr(line.find(',', line.find(',') + 1) + 1));
+        out += line + "," + std::to_string(100 + 67 * delta_mm) + "\n";
+      }
+    }
+    in.close();
+    write(f, out);
+  }
+  CampaignOptions o;
+  o.bootstrap_samples = 20;
+  const auto r = analyse_campaign(read_campaign_manifest(m), {}, o, {});
+  ASSERT_EQ(r.groups.size(), 1u);
+  const auto& g = r.groups[0];
+  ASSERT_TRUE(g.estimate.ok) << g.estimate.failure;
+  // Linear interpolation of a linear column: exact to the printed digits (std::to_string, 1e-6).
+  EXPECT_NEAR(g.estimate.l_b, 6.7e-3, 1e-8);
+  EXPECT_NEAR(r.specimens[0].l_b, 6.7e-3, 1e-8);
+  ASSERT_TRUE(std::isfinite(g.estimate.rho_low));
+  EXPECT_LT(g.estimate.rho_low, g.estimate.rho_high);
+  // The range is the model's at the fitted sigma1 and the group's l_b (bridging_model.h), for
+  // the tracheid (Bridging section defaults) and the seed's bundle at 50 J/m^2.
+  const auto rho = [&](const BridgingFiber& f) {
+    return bridged_density(g.estimate.tri.s1, 0.1e-3, g.estimate.l_b, f,
+                           BridgingMechanism::governing, false);
+  };
+  const double a1 = rho(seed_tracheid_fiber()), a2 = rho(seed_bundle_fiber(50));
+  EXPECT_DOUBLE_EQ(g.estimate.rho_low, std::min(a1, a2));
+  EXPECT_DOUBLE_EQ(g.estimate.rho_high, std::max(a1, a2));
+  EXPECT_TRUE(std::isfinite(g.ci[static_cast<std::size_t>(GroupQuantity::rho_high)].hi));
+}
+
+// A raw record that measured delta_root becomes the specimen's R(delta_root) (reduce's direct
+// energy, to_rdelta); one without stays R(a) only. The shared record DCB-01 (data/dcb_records)
+// with a made-up delta_root column (a fifth of the opening: only the plumbing is tested here).
+TEST(CampaignSpecimen, RawRecordWithDeltaRootGivesRDelta) {
+  const fs::path d = scratch("raw");
+  const std::string record =
+      std::string(FIBERBRIDGE_DATA_DIR) + "/dcb_records/DCB-01_Toughness.csv";
+  std::ifstream in(record);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r')
+      line.pop_back();
+    if (line.rfind("Time", 0) == 0)
+      out += line + ",Root\n";
+    else {
+      const auto c1 = line.find(','), c2 = line.find(',', c1 + 1);
+      out += line + "," + std::to_string(0.2 * std::stod(line.substr(c1 + 1, c2 - c1 - 1))) + "\n";
+    }
+  }
+  write(d / "with_root.csv", out);
+  write(d / "m.csv", "file,material,cycles,specimen\nwith_root.csv,X,0,a\n" + record + ",Y,0,b\n");
+  RawRecordOptions raw;
+  raw.read.columns = RecordColumnMap::parse(
+      "time_s: Time, opening_mm: Disp, load_N: Force, a_mm: CrackExt, delta_root_mm: Root", "t");
+  raw.specimen.width = 25e-3;
+  raw.specimen.arm_thickness = 2.7e-3;
+  const auto manifest = read_campaign_manifest((d / "m.csv").string());
+  const auto a = load_campaign_specimen(manifest.rows[0], raw);
+  EXPECT_EQ(a.input, SpecimenInput::raw_record);
+  EXPECT_TRUE(a.has_rdelta);
+  EXPECT_GT(a.curve.delta.size(), 5u);
+  EXPECT_EQ(a.curve.a.size(), a.curve.delta.size());
+  raw.read.columns =
+      RecordColumnMap::parse("time_s: Time, opening_mm: Disp, load_N: Force, a_mm: CrackExt", "t");
+  const auto b = load_campaign_specimen(manifest.rows[1], raw);
+  EXPECT_FALSE(b.has_rdelta);
+  EXPECT_TRUE(std::isfinite(b.plateau));
+  EXPECT_TRUE(std::isfinite(b.initiation));
+}
