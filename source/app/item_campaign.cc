@@ -174,7 +174,9 @@ struct CampaignInputs {
 CampaignInputs campaign_inputs(SceneContext& ctx) {
   CampaignInputs in;
   in.section = parse_section<CampaignSection>(*ctx.prm, "Campaign");
-  in.manifest_path = resolve_scene_path(in.section.manifest, ctx.scene_file);
+  in.manifest_path = std::filesystem::path(resolve_scene_path(in.section.manifest, ctx.scene_file))
+                         .lexically_normal()
+                         .string();
   if (!std::filesystem::is_regular_file(in.manifest_path))
     throw InputError(ctx.scene_file + ": Campaign/Manifest: file '" + in.section.manifest +
                      "' not found");
