@@ -74,16 +74,45 @@ double quantile(std::vector<double> v, double q) {
   return v[lo] + (h - lo) * (v[hi] - v[lo]);
 }
 
-/// The tail probability of each end of the interval: (1 - level)/2, or with the expanded
-/// percentile bootstrap Phi(-sqrt(n/(n-1)) t_{n-1, 1-(1-level)/2}).
-double bootstrap_tail(const CampaignOptions& o, std::size_t n) {
-  const double a = 0.5 * (1 - o.confidence);
-  if (!o.expanded_percentile || n < 2)
-    return a;
+/// sqrt(n/(n-1)) t_{n-1, 1-(1-level)/2}: the small-sample factor of both corrected intervals
+/// (the bootstrap's variance of a mean of n is (n-1)/n of the sample's, and its tails are
+/// Student's, not normal).
+double small_sample_factor(const CampaignOptions& o, std::size_t n) {
   const double nn = static_cast<double>(n);
   const boost::math::students_t t(nn - 1);
-  const double z = std::sqrt(nn / (nn - 1)) * boost::math::quantile(t, 1 - a);
-  return boost::math::cdf(boost::math::normal(), -z);
+  return std::sqrt(nn / (nn - 1)) * boost::math::quantile(t, 1 - 0.5 * (1 - o.confidence));
+}
+
+/// The tail probability of each end of a percentile interval: (1 - level)/2, or with the
+/// expanded percentile bootstrap (Hesterberg) Phi(-small_sample_factor).
+double bootstrap_tail(const CampaignOptions& o, std::size_t n) {
+  if (o.interval != CampaignOptions::Interval::expanded_percentile || n < 2)
+    return 0.5 * (1 - o.confidence);
+  return boost::math::cdf(boost::math::normal(), -small_sample_factor(o, n));
+}
+
+/// The interval of `samples` around the point estimate `v` by the chosen method. student_t:
+/// v -+ small_sample_factor x the samples' standard deviation, not below 0 (every group quantity
+/// is non-negative: stresses, toughnesses, openings, lengths, densities).
+Interval make_interval(const CampaignOptions& o, std::size_t n, double v,
+                       const std::vector<double>& samples) {
+  if (o.interval != CampaignOptions::Interval::student_t) {
+    const double a = bootstrap_tail(o, n);
+    return {quantile(samples, a), quantile(samples, 1 - a)};
+  }
+  double s = 0, ss = 0;
+  int m = 0;
+  for (double x : samples)
+    if (std::isfinite(x)) {
+      s += x;
+      ss += x * x;
+      ++m;
+    }
+  if (m < 2 || !std::isfinite(v))
+    return {};
+  const double mean = s / m, sd = std::sqrt(std::max(0.0, (ss - m * mean * mean) / (m - 1)));
+  const double k = small_sample_factor(o, n);
+  return {std::max(0.0, v - k * sd), v + k * sd};
 }
 
 double median(std::vector<double> v) {
@@ -357,18 +386,23 @@ void analyse_campaign_group(CampaignGroup& group, const std::vector<CampaignSpec
       for (std::size_t i = 0; i < group.law_delta.size(); ++i)
         band[i].push_back(law_at(e.laws.delta, e.laws.sigma_eq6, group.law_delta[i]));
   }
-  const double alpha = bootstrap_tail(o, group.members.size());
+  const std::size_t n = group.members.size();
   for (std::size_t k = 0; k < n_group_quantities; ++k) {
     std::vector<double> v;
     for (const auto& s : group.samples)
       v.push_back(s[k]);
-    group.ci[k] = {quantile(v, alpha), quantile(v, 1 - alpha)};
+    group.ci[k] =
+        make_interval(o, n, quantity_value(group.estimate, static_cast<GroupQuantity>(k)), v);
   }
   group.law_lo.resize(band.size());
   group.law_hi.resize(band.size());
   for (std::size_t i = 0; i < band.size(); ++i) {
-    group.law_lo[i] = quantile(band[i], alpha);
-    group.law_hi[i] = quantile(band[i], 1 - alpha);
+    const double at =
+        law ? law_at(group.estimate.laws.delta, group.estimate.laws.sigma_eq6, group.law_delta[i])
+            : NAN;
+    const Interval b = make_interval(o, n, at, band[i]);
+    group.law_lo[i] = b.lo;
+    group.law_hi[i] = b.hi;
   }
   if (group.failed_samples > 0)
     group.notes.push_back(name + ": " + std::to_string(group.failed_samples) + " of " +

@@ -80,6 +80,13 @@ const analysis::Interval& ci(const CampaignGroup& g, GroupQuantity k) {
   return g.ci[static_cast<std::size_t>(k)];
 }
 
+std::string interval_name(const analysis::CampaignOptions& o) {
+  using I = analysis::CampaignOptions::Interval;
+  return o.interval == I::student_t             ? "student t with the bootstrap standard deviation"
+         : o.interval == I::expanded_percentile ? "expanded percentile bootstrap"
+                                                : "percentile bootstrap";
+}
+
 Json interval_json(const analysis::Interval& i) {
   return Json::array({json_number(i.lo), json_number(i.hi)});
 }
@@ -519,8 +526,7 @@ void write_html(const CampaignResult& r, const CampaignWriteOptions& w,
        " bootstrap over whole "
        "specimens within each group (" +
        std::to_string(r.options.bootstrap_samples) + " samples, seed " +
-       std::to_string(r.options.seed) + ", " +
-       (r.options.expanded_percentile ? "expanded percentile" : "percentile") + "). Analysis " +
+       std::to_string(r.options.seed) + ", " + interval_name(r.options) + "). Analysis " +
        fmt(w.seconds, 3) + " s.</p>\n";
   // Table 1
   const auto cycles = cycles_of(r);
@@ -678,8 +684,7 @@ Json summary_block(const CampaignResult& r, const CampaignWriteOptions& w) {
           {"bootstrap_samples", r.options.bootstrap_samples},
           {"seed", r.options.seed},
           {"confidence", r.options.confidence},
-          {"interval", r.options.expanded_percentile ? "expanded percentile bootstrap"
-                                                     : "percentile bootstrap"},
+          {"interval", interval_name(r.options)},
           {"wall_time_s", w.seconds},
           {"groups", groups},
           {"degradation", deg},

@@ -41,7 +41,7 @@ struct CampaignSection {
   int bootstrap_samples = 1000;
   unsigned seed = 1;
   double confidence = 0.95;
-  bool expanded = true;
+  analysis::CampaignOptions::Interval interval = analysis::CampaignOptions::Interval::student_t;
   std::vector<std::string> reference_materials;
   double outlier_mads = 3.5;
   bool fe_export = true;
@@ -59,10 +59,11 @@ struct CampaignSection {
                       "Seed of the bootstrap; each group mixes it with its (material, cycles).");
     prm.declare_entry("Confidence level", "0.95", dealii::Patterns::Double(0.5, 0.999),
                       "Level of every interval.");
-    prm.declare_entry("Interval", "expanded percentile",
-                      dealii::Patterns::Selection("expanded percentile|percentile"),
-                      "Bootstrap interval: the percentile interval, or widened for few "
-                      "specimens (Hesterberg's expanded percentile; docs/design.md section 1).");
+    prm.declare_entry("Interval", "student t",
+                      dealii::Patterns::Selection("student t|expanded percentile|percentile"),
+                      "Bootstrap interval: student t (estimate -+ sqrt(n/(n-1)) t_{n-1} bootstrap "
+                      "standard deviations; covers its level with few specimens), expanded "
+                      "percentile (Hesterberg) or percentile (docs/design.md section 1).");
     prm.declare_entry("Reference materials", "DF", dealii::Patterns::Anything(),
                       "Comma-separated materials reported beside the others but not ranked "
                       "(the seed's solid wood DF has no adhesive).");
@@ -84,7 +85,11 @@ struct CampaignSection {
     bootstrap_samples = prm.get_integer("Bootstrap samples");
     seed = static_cast<unsigned>(prm.get_integer("Seed"));
     confidence = prm.get_double("Confidence level");
-    expanded = prm.get("Interval") == "expanded percentile";
+    const std::string iv = prm.get("Interval");
+    interval = iv == "percentile" ? analysis::CampaignOptions::Interval::percentile
+               : iv == "expanded percentile"
+                   ? analysis::CampaignOptions::Interval::expanded_percentile
+                   : analysis::CampaignOptions::Interval::student_t;
     outlier_mads = prm.get_double("Outlier threshold");
     fe_export = prm.get_bool("FE export");
     simulate = prm.get_bool("Simulate laws");
@@ -184,7 +189,7 @@ CampaignInputs campaign_inputs(SceneContext& ctx) {
   in.options.bootstrap_samples = in.section.bootstrap_samples;
   in.options.seed = in.section.seed;
   in.options.confidence = in.section.confidence;
-  in.options.expanded_percentile = in.section.expanded;
+  in.options.interval = in.section.interval;
   in.options.outlier_mads = in.section.outlier_mads;
   // Raw records: read and reduced as `reduce` does (Test section; Specimen for the geometry,
   // which a manifest row's width_mm / arm_thickness_mm override).

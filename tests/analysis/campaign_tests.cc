@@ -109,11 +109,12 @@ TEST(CampaignSynthetic, WithoutScatterTheMethodAloneIsClose) {
 }
 
 // Coverage of the 95 % intervals over repeated campaigns (other seeds of the data and of the
-// bootstrap): 6 campaigns x 20 groups x 6 quantities. Measured 0.89-0.91 with the expanded
-// percentile interval and 0.80-0.83 with the plain one at 5 specimens per group
-// (docs/verification.md, "Durability campaign"): a bootstrap over 5 specimens under-covers.
-// The bounds say the intervals are neither too narrow (below 0.80, they would mislead) nor
-// vacuous (above 0.995); the binomial standard error of 720 trials at 0.9 is 0.011.
+// bootstrap): 6 campaigns x 20 groups x 6 quantities. Measured over 20 campaigns
+// (docs/verification.md, "Durability campaign"): 0.945 with the default student t interval,
+// 0.89 expanded percentile, 0.82 percentile (a percentile interval cannot reach beyond the range
+// of 5 specimens). The binomial standard error of 720 trials at 0.945 is 0.0085: the bounds
+// (0.90, 0.985) are 5 of them either side, so the test fails for intervals that are too narrow
+// (the percentile ones would) or vacuous, not by chance.
 TEST(CampaignSynthetic, IntervalCoverageOverRepeatedCampaigns) {
   int hit = 0, all = 0;
   const auto truth = table1_truth(read_property_table(table1));
@@ -137,8 +138,8 @@ TEST(CampaignSynthetic, IntervalCoverageOverRepeatedCampaigns) {
   }
   const double coverage = static_cast<double>(hit) / all;
   std::cout << "coverage of the 95 % intervals: " << hit << "/" << all << " = " << coverage << "\n";
-  EXPECT_GT(coverage, 0.80);
-  EXPECT_LT(coverage, 0.995);
+  EXPECT_GT(coverage, 0.90);
+  EXPECT_LT(coverage, 0.985);
 }
 
 // The ranking: with 3 % specimen scatter the campaign must give the paper's order and be sure of

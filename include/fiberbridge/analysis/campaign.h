@@ -100,11 +100,13 @@ struct CampaignOptions {
   int bootstrap_samples = 1000;
   unsigned seed = 1;
   double confidence = 0.95;
-  /// Percentile intervals widened for few specimens (Hesterberg's expanded percentile
-  /// bootstrap: the tail probability whose normal quantile is sqrt(n/(n-1)) t_{n-1}), since the
-  /// plain percentile interval of a mean of n = 4-10 specimens covers less than its level
-  /// (docs/verification.md, "Durability campaign").
-  bool expanded_percentile = true;
+  /// How the bootstrap samples become an interval (docs/design.md section 1, "Durability
+  /// campaign"). A percentile interval cannot reach beyond the range the n specimens span, which
+  /// holds the true mean with probability 1 - 2^(1-n) at best (0.94 for n = 5), so with 4-10
+  /// specimens it covers less than its level; student_t (estimate +- sqrt(n/(n-1)) t_{n-1}
+  /// times the bootstrap standard deviation) does not have that limit.
+  enum class Interval { student_t, expanded_percentile, percentile };
+  Interval interval = Interval::student_t;
   /// A specimen stands far from its group when its G_ss differs from the group's median by more
   /// than this many robust standard deviations (1.4826 MAD) and by more than 10 % of the median.
   double outlier_mads = 3.5;
