@@ -308,7 +308,8 @@ void declare_campaign_section(dealii::ParameterHandler& prm) {
 }
 
 void check_campaign_item(SceneContext& ctx) {
-  campaign_inputs(ctx);
+  // The manifest's own errors (missing file, duplicates: manifest:line) before any item runs.
+  analysis::read_campaign_manifest(campaign_inputs(ctx).manifest_path);
 }
 
 void run_campaign_item(SceneContext& ctx) {
