@@ -34,6 +34,7 @@ const std::vector<SceneItem>& scene_items() {
         {"fit", &declare_fit_section, &check_fit_item, &run_fit_item},
         {"rank", &declare_rank_section, &check_rank_item, &run_rank_item},
         {"bridging", &declare_bridging_section, &check_bridging_item, &run_bridging_item},
+        {"campaign", &declare_campaign_section, &check_campaign_item, &run_campaign_item},
     };
     for (const SimulationModel* m : built_models())
       v.push_back(m->item());
@@ -51,7 +52,7 @@ namespace {
 
 /// Every item a scene may list, built or not.
 const std::string all_item_names =
-    "reduce, identify, extract, fit, rank, bridging, " + model_names() + ", compare, study";
+    "reduce, identify, extract, fit, rank, bridging, campaign, " + model_names() + ", compare, study";
 
 void declare_everything(dealii::ParameterHandler& prm) {
   prm.declare_entry("Output directory", "output", dealii::Patterns::Anything(),

@@ -1,0 +1,49 @@
+#pragma once
+// The campaign's laws back in the specimen (issue 33 item 5, the paper's Fig. 10): each group's
+// trilinear law and J_tip simulated on the scene's Specimen and Material by a model chosen by
+// key, the simulated R(delta_root) against the group's measured curve and its scatter, and the
+// misfit. Models wired: beam (when built). The FEM and MPM are left to the model registry of
+// issue 30 (one place where a model is chosen by name).
+#include "fiberbridge/analysis/campaign_run.h"
+#include "fiberbridge/app/scene_context.h"
+
+#include <string>
+#include <vector>
+
+namespace fiberbridge::app {
+
+struct GroupSimulation {
+  std::string material, model;
+  double cycles = 0;
+  bool ran = false;
+  std::string failure;
+  std::vector<double> delta_root, R; ///< simulated, R_energy (R_J where absent) [m], [J/m^2]
+  double G_ss = NAN;                 ///< simulated plateau [J/m^2]
+  /// RMS of simulated minus measured R over the measured delta range (up to the simulation's
+  /// last delta_root), relative to the group's G_B = G_ss - J_tip.
+  double misfit_rel = NAN;
+  /// Fraction of those points where the simulation lies within 2 standard deviations of the
+  /// measured replicates (the specimens' scatter).
+  double within_scatter = NAN;
+  double wall_time_s = NAN;
+};
+
+/// The models this build can put the laws back into ("beam" when built); empty: none.
+std::vector<std::string> campaign_simulation_models();
+
+/// Every group with a law, simulated by `model` on ctx's Specimen and Material (and the model's
+/// section). Groups are independent; on N ranks they run as tasks (task_distributor.h).
+std::vector<GroupSimulation> simulate_campaign_laws(SceneContext& ctx,
+                                                    const analysis::CampaignResult& r,
+                                                    const std::string& model);
+
+/// Writes campaign_fig10_<material>_c<cycles>.csv per simulated group and a PNG per material
+/// (every cycle count: measured with +-2 std, simulated); returns the PNGs made.
+std::vector<std::string> write_campaign_simulation_files(const analysis::CampaignResult& r,
+                                                         const std::vector<GroupSimulation>& sims,
+                                                         const std::string& out_dir);
+/// campaign.groups[i].simulation in the summary (after write_campaign_outputs made the block).
+void add_campaign_simulation_summary(const analysis::CampaignResult& r,
+                                     const std::vector<GroupSimulation>& sims, Json& summary);
+
+} // namespace fiberbridge::app

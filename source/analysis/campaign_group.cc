@@ -1,0 +1,417 @@
+// One group of a campaign: the one-data-set chain on its specimens (estimate_group) and the
+// bootstrap over whole specimens that gives its intervals (campaign.h; docs/design.md section 1,
+// "Durability campaign").
+#include "fiberbridge/analysis/campaign.h"
+#include "fiberbridge/analysis/trilinear_fit.h"
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
+#include "fiberbridge/core/units.h"
+
+#include <boost/math/distributions/normal.hpp>
+#include <boost/math/distributions/students_t.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <random>
+
+namespace fiberbridge::analysis {
+
+using units::kPa;
+using units::mm;
+
+namespace {
+
+/// Crack growth from the first row to where delta reaches `d` (linear in delta); NaN without a.
+double growth_to_opening(const Replicate& r, double d) {
+  if (r.a.size() != r.delta.size() || r.a.empty() || r.delta.back() < d)
+    return NAN;
+  for (std::size_t i = 1; i < r.delta.size(); ++i)
+    if (r.delta[i] >= d) {
+      const double w =
+          r.delta[i] > r.delta[i - 1] ? (d - r.delta[i - 1]) / (r.delta[i] - r.delta[i - 1]) : 1.0;
+      return r.a[i - 1] + w * (r.a[i] - r.a[i - 1]) - r.a.front();
+    }
+  return NAN;
+}
+
+/// Mean of the finite values, NaN when there is none.
+double finite_mean(const std::vector<double>& v) {
+  double s = 0;
+  int n = 0;
+  for (double x : v)
+    if (std::isfinite(x)) {
+      s += x;
+      ++n;
+    }
+  return n ? s / n : NAN;
+}
+
+/// Linear interpolation on an increasing grid; 0 outside [x0, xn] (a law beyond its delta_c).
+double law_at(const std::vector<double>& x, const std::vector<double>& y, double t) {
+  if (x.empty() || t < x.front() || t > x.back())
+    return 0;
+  const auto it = std::upper_bound(x.begin(), x.end(), t);
+  if (it == x.end())
+    return y.back();
+  const std::size_t i = static_cast<std::size_t>(it - x.begin());
+  if (i == 0)
+    return y.front();
+  const double w = (t - x[i - 1]) / (x[i] - x[i - 1]);
+  return y[i - 1] + w * (y[i] - y[i - 1]);
+}
+
+/// The q-quantile of the finite values (linear between order statistics, "type 7").
+double quantile(std::vector<double> v, double q) {
+  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
+  if (v.empty())
+    return NAN;
+  std::sort(v.begin(), v.end());
+  const double h = q * (v.size() - 1);
+  const std::size_t lo = static_cast<std::size_t>(std::floor(h));
+  const std::size_t hi = std::min(lo + 1, v.size() - 1);
+  return v[lo] + (h - lo) * (v[hi] - v[lo]);
+}
+
+/// sqrt(n/(n-1)) t_{n-1, 1-(1-level)/2}: the small-sample factor of both corrected intervals
+/// (the bootstrap's variance of a mean of n is (n-1)/n of the sample's, and its tails are
+/// Student's, not normal).
+double small_sample_factor(const CampaignOptions& o, std::size_t n) {
+  const double nn = static_cast<double>(n);
+  const boost::math::students_t t(nn - 1);
+  return std::sqrt(nn / (nn - 1)) * boost::math::quantile(t, 1 - 0.5 * (1 - o.confidence));
+}
+
+/// The tail probability of each end of a percentile interval: (1 - level)/2, or with the
+/// expanded percentile bootstrap (Hesterberg) Phi(-small_sample_factor).
+double bootstrap_tail(const CampaignOptions& o, std::size_t n) {
+  if (o.interval != CampaignOptions::Interval::expanded_percentile || n < 2)
+    return 0.5 * (1 - o.confidence);
+  return boost::math::cdf(boost::math::normal(), -small_sample_factor(o, n));
+}
+
+/// The interval of `samples` around the point estimate `v` by the chosen method. student_t:
+/// v -+ small_sample_factor x the samples' standard deviation, not below 0 (every group quantity
+/// is non-negative: stresses, toughnesses, openings, lengths, densities).
+Interval make_interval(const CampaignOptions& o, std::size_t n, double v,
+                       const std::vector<double>& samples) {
+  if (o.interval != CampaignOptions::Interval::student_t) {
+    const double a = bootstrap_tail(o, n);
+    return {quantile(samples, a), quantile(samples, 1 - a)};
+  }
+  double s = 0, ss = 0;
+  int m = 0;
+  for (double x : samples)
+    if (std::isfinite(x)) {
+      s += x;
+      ss += x * x;
+      ++m;
+    }
+  if (m < 2 || !std::isfinite(v))
+    return {};
+  const double mean = s / m, sd = std::sqrt(std::max(0.0, (ss - m * mean * mean) / (m - 1)));
+  const double k = small_sample_factor(o, n);
+  return {std::max(0.0, v - k * sd), v + k * sd};
+}
+
+double median(std::vector<double> v) {
+  return quantile(std::move(v), 0.5);
+}
+
+} // namespace
+
+GroupEstimate estimate_group(const std::vector<CampaignSpecimen>& specimens,
+                             const std::vector<std::size_t>& members, const CampaignOptions& o,
+                             bool keep_curves) {
+  GroupEstimate g;
+  try {
+    if (members.empty())
+      throw InputError("no specimens");
+    if (!specimens[members.front()].has_rdelta) {
+      // R(a)-only (raw records without delta_root): the direct-energy initiation and plateau.
+      std::vector<double> init, plat;
+      for (auto m : members) {
+        init.push_back(specimens[m].initiation);
+        plat.push_back(specimens[m].plateau);
+      }
+      g.j_tip = finite_mean(init);
+      g.G_ss = finite_mean(plat);
+      g.ok = std::isfinite(g.G_ss);
+      if (!g.ok)
+        g.failure = "no record has a plateau";
+      return g;
+    }
+    RDeltaData d;
+    d.source = specimens[members.front()].row.material + " at " +
+               fmt(specimens[members.front()].row.cycles) + " cycles";
+    std::vector<double> dcs, jts;
+    for (auto m : members) {
+      d.replicates.push_back(specimens[m].curve);
+      dcs.push_back(specimens[m].row.delta_c);
+      jts.push_back(specimens[m].row.j_tip);
+    }
+    const RDeltaCurve curve = average_replicates(d, o.grid_points);
+    SteadyStateOptions so;
+    so.delta_c = std::isfinite(finite_mean(dcs)) ? finite_mean(dcs) : o.delta_c;
+    so.j_tip = std::isfinite(finite_mean(jts)) ? finite_mean(jts) : o.j_tip;
+    const SteadyState st = find_steady_state(curve, so, d.source);
+    const ExtractedLaws laws = extract_cohesive_laws(curve, st.delta_c, o.intervals, o.half_width);
+    const double dc = st.delta_c, G_B = st.G_ss - st.j_tip;
+    TrilinearFit fit;
+    if (o.free_breakpoints)
+      fit = fit_trilinear_free(laws.delta, laws.sigma_eq6, dc, G_B, o.d1_min, o.d1_max,
+                               o.d2_max > 0 ? o.d2_max : 0.5 * dc);
+    else {
+      if (!(o.d1 < o.d2 && o.d2 < dc))
+        throw InputError("Fit: need Delta 1 < Delta 2 < delta_c (" + fmt(dc / mm) + " mm)");
+      fit = fit_trilinear_fixed(laws.delta, laws.sigma_eq6, o.d1, o.d2, dc, G_B);
+    }
+    g.j_tip = st.j_tip;
+    g.G_ss = st.G_ss;
+    g.delta_c = dc;
+    g.tri = fit.law;
+    g.J1 = fit.law.j1();
+    g.J2 = fit.law.j2();
+    g.rms_residual = fit.rms_residual;
+    g.has_law = true;
+    // l_b: crack growth to the peak-stress opening d1 (seed section 3.4), where the records carry
+    // crack lengths; the rho_b range from sigma_1 at that opening by Eqs. 13/15 (exact governing
+    // form), tracheid and bundle fibers as the seed brackets it.
+    std::vector<double> lbs;
+    for (auto m : members)
+      lbs.push_back(growth_to_opening(specimens[m].curve, fit.law.d1));
+    g.l_b = finite_mean(lbs);
+    if (std::isfinite(g.l_b) && g.l_b > 0 && fit.law.s1 > 0) {
+      const double r1 = bridged_density(fit.law.s1, o.rho_opening, g.l_b, o.fiber_low,
+                                        BridgingMechanism::governing, false);
+      const double r2 = bridged_density(fit.law.s1, o.rho_opening, g.l_b, o.fiber_high,
+                                        BridgingMechanism::governing, false);
+      g.rho_low = std::min(r1, r2);
+      g.rho_high = std::max(r1, r2);
+    }
+    if (keep_curves) {
+      g.curve = curve;
+      g.laws = laws;
+      g.steady = st;
+    }
+    g.ok = true;
+  } catch (const std::exception& e) {
+    g.ok = false;
+    g.failure = e.what();
+  }
+  return g;
+}
+
+void assess_campaign_specimen(CampaignSpecimen& s, const CampaignOptions& o) {
+  if (!s.has_rdelta) {
+    s.steady = false;
+    return;
+  }
+  try {
+    RDeltaData d;
+    d.source = s.row.file;
+    d.replicates.push_back(s.curve);
+    const RDeltaCurve c = average_replicates(d, o.grid_points);
+    SteadyStateOptions so;
+    so.delta_c = std::isfinite(s.row.delta_c) ? s.row.delta_c : o.delta_c;
+    so.j_tip = std::isfinite(s.row.j_tip) ? s.row.j_tip : o.j_tip;
+    s.own = find_steady_state(c, so, s.row.file);
+    s.steady = true;
+  } catch (const std::exception& e) {
+    s.steady = false;
+    s.notes.push_back(std::string("its R curve alone reaches no steady state (") + e.what() +
+                      "); kept in the group's average");
+  }
+  s.l_b = growth_to_opening(s.curve, o.d1);
+}
+
+double quantity_value(const GroupEstimate& g, GroupQuantity q) {
+  const bool law = g.ok && g.has_law;
+  switch (q) {
+  case GroupQuantity::d1:
+    return law ? g.tri.d1 / mm : NAN;
+  case GroupQuantity::sigma1:
+    return law ? g.tri.s1 / kPa : NAN;
+  case GroupQuantity::d2:
+    return law ? g.tri.d2 / mm : NAN;
+  case GroupQuantity::sigma2:
+    return law ? g.tri.s2 / kPa : NAN;
+  case GroupQuantity::delta_c:
+    return law ? g.delta_c / mm : NAN;
+  case GroupQuantity::J1:
+    return law ? g.J1 : NAN;
+  case GroupQuantity::J2:
+    return law ? g.J2 : NAN;
+  case GroupQuantity::G_ss:
+    return g.ok ? g.G_ss : NAN;
+  case GroupQuantity::J_tip:
+    return g.ok ? g.j_tip : NAN;
+  case GroupQuantity::l_b:
+    return law ? g.l_b / mm : NAN;
+  case GroupQuantity::rho_low:
+    return law ? g.rho_low * units::mm2 : NAN;
+  case GroupQuantity::rho_high:
+    return law ? g.rho_high * units::mm2 : NAN;
+  default:
+    return NAN;
+  }
+}
+
+const char* quantity_key(GroupQuantity q) {
+  static const char* keys[] = {"d1_mm",      "sigma1_kPa",        "d2_mm",
+                               "sigma2_kPa", "delta_c_mm",        "J1_J_m2",
+                               "J2_J_m2",    "G_ss_J_m2",         "J_tip_J_m2",
+                               "l_b_mm",     "rho_b_low_per_mm2", "rho_b_high_per_mm2"};
+  return keys[static_cast<std::size_t>(q)];
+}
+
+unsigned group_seed(unsigned campaign_seed, const std::string& material, double cycles) {
+  // FNV-1a over the seed, the material and the cycle count as printed: the same on every
+  // platform and independent of the group's position in the manifest.
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&](const std::string& s) {
+    for (unsigned char c : s) {
+      h ^= c;
+      h *= 1099511628211ull;
+    }
+  };
+  mix(std::to_string(campaign_seed));
+  mix("|" + material + "|" + fmt(cycles));
+  return static_cast<unsigned>(h ^ (h >> 32));
+}
+
+std::vector<CampaignGroup> make_campaign_groups(const std::vector<CampaignSpecimen>& specimens) {
+  std::vector<CampaignGroup> groups;
+  for (std::size_t i = 0; i < specimens.size(); ++i) {
+    const auto& s = specimens[i];
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const CampaignGroup& g) {
+      return g.material == s.row.material && g.cycles == s.row.cycles;
+    });
+    if (it == groups.end()) {
+      groups.push_back({});
+      it = groups.end() - 1;
+      it->material = s.row.material;
+      it->cycles = s.row.cycles;
+    } else {
+      const auto& first = specimens[it->members.front()];
+      if (first.has_rdelta != s.has_rdelta)
+        throw InputError(s.row.where() + ": specimen '" + s.row.specimen + "' (" +
+                         (s.has_rdelta ? "R(delta)" : "R(a) only, no delta_root") +
+                         ") joins a group of " + (first.has_rdelta ? "R(delta)" : "R(a)-only") +
+                         " specimens (" + first.row.where() +
+                         "): one group, one kind of input (the laws and the plateaus are not "
+                         "averaged together)");
+      if (first.input != s.input)
+        throw InputError(s.row.where() + ": specimen '" + s.row.specimen + "' is a " +
+                         to_string(s.input) + ", " + first.row.where() + " of the same group a " +
+                         to_string(first.input) + ": one group, one kind of input");
+    }
+    it->members.push_back(i);
+  }
+  return groups;
+}
+
+void analyse_campaign_group(CampaignGroup& group, const std::vector<CampaignSpecimen>& specimens,
+                            const CampaignOptions& o) {
+  group.estimate = estimate_group(specimens, group.members, o, true);
+  group.seed = group_seed(o.seed, group.material, group.cycles);
+  const std::string name = group.material + " at " + fmt(group.cycles) + " cycles";
+  if (!group.estimate.ok)
+    group.notes.push_back(name + ": no estimate (" + group.estimate.failure + ")");
+
+  // Specimens named in the notes (never dropped): no steady state of their own, or far from the
+  // group (robust z of G_ss).
+  std::vector<double> gss;
+  for (auto m : group.members) {
+    const auto& s = specimens[m];
+    for (const auto& n : s.notes)
+      group.notes.push_back("specimen '" + s.row.specimen + "' (" + s.row.where() + "): " + n);
+    gss.push_back(s.steady ? s.own.G_ss : s.plateau);
+  }
+  if (group.members.size() >= 3) {
+    const double med = median(gss);
+    std::vector<double> dev;
+    for (double x : gss)
+      if (std::isfinite(x))
+        dev.push_back(std::abs(x - med));
+    const double mad = 1.4826 * median(dev);
+    for (std::size_t i = 0; i < gss.size(); ++i) {
+      const double x = gss[i];
+      if (!std::isfinite(x))
+        continue;
+      const double z = mad > 0 ? std::abs(x - med) / mad : 0;
+      if (z > o.outlier_mads && std::abs(x - med) > 0.1 * med) {
+        const auto& s = specimens[group.members[i]];
+        group.notes.push_back("specimen '" + s.row.specimen + "' (" + s.row.where() +
+                              ") stands far from its group: G_ss " + fmt(x) +
+                              " J/m^2 against the group's median " + fmt(med) + " J/m^2 (" +
+                              fmt(z) + " robust standard deviations); kept in the group");
+      }
+    }
+  }
+
+  if (group.members.size() < 2) {
+    group.notes.push_back(name + ": one specimen, no interval (the bootstrap resamples whole "
+                                 "specimens and needs at least two)");
+    return;
+  }
+  if (o.bootstrap_samples <= 0)
+    return;
+  std::mt19937 rng(group.seed);
+  std::uniform_int_distribution<std::size_t> pick(0, group.members.size() - 1);
+  std::vector<std::size_t> resample(group.members.size());
+  const bool law = group.estimate.ok && group.estimate.has_law;
+  if (law) {
+    const int nb = std::max(2, o.law_band_points);
+    group.law_delta.resize(nb);
+    for (int i = 0; i < nb; ++i)
+      group.law_delta[i] = group.estimate.delta_c * i / (nb - 1);
+  }
+  std::vector<std::vector<double>> band(group.law_delta.size());
+  group.samples.reserve(o.bootstrap_samples);
+  for (int b = 0; b < o.bootstrap_samples; ++b) {
+    for (auto& r : resample)
+      r = group.members[pick(rng)];
+    const GroupEstimate e = estimate_group(specimens, resample, o, law);
+    std::array<double, n_group_quantities> q;
+    for (std::size_t k = 0; k < n_group_quantities; ++k)
+      q[k] = e.ok ? quantity_value(e, static_cast<GroupQuantity>(k)) : NAN;
+    group.samples.push_back(q);
+    if (!e.ok) {
+      ++group.failed_samples;
+      continue;
+    }
+    if (law && e.has_law)
+      for (std::size_t i = 0; i < group.law_delta.size(); ++i)
+        band[i].push_back(law_at(e.laws.delta, e.laws.sigma_eq6, group.law_delta[i]));
+  }
+  const std::size_t n = group.members.size();
+  for (std::size_t k = 0; k < n_group_quantities; ++k) {
+    std::vector<double> v;
+    for (const auto& s : group.samples)
+      v.push_back(s[k]);
+    group.ci[k] =
+        make_interval(o, n, quantity_value(group.estimate, static_cast<GroupQuantity>(k)), v);
+  }
+  group.law_lo.resize(band.size());
+  group.law_hi.resize(band.size());
+  for (std::size_t i = 0; i < band.size(); ++i) {
+    const double at =
+        law ? law_at(group.estimate.laws.delta, group.estimate.laws.sigma_eq6, group.law_delta[i])
+            : NAN;
+    const Interval b = make_interval(o, n, at, band[i]);
+    group.law_lo[i] = b.lo;
+    group.law_hi[i] = b.hi;
+  }
+  if (group.failed_samples > 0)
+    group.notes.push_back(name + ": " + std::to_string(group.failed_samples) + " of " +
+                          std::to_string(o.bootstrap_samples) +
+                          " bootstrap samples gave no estimate (left out of the intervals)");
+  if (group.members.size() < 4)
+    group.notes.push_back(name + ": " + std::to_string(group.members.size()) +
+                          " specimens: a bootstrap over so few specimens gives intervals that "
+                          "are too narrow (treat them as indicative)");
+}
+
+} // namespace fiberbridge::analysis

@@ -1,0 +1,157 @@
+// The campaign's manifest and its specimens as read (campaign.h).
+#include "fiberbridge/analysis/campaign.h"
+#include "fiberbridge/core/csv.h"
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <tuple>
+#include <utility>
+
+namespace fiberbridge::analysis {
+
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t");
+  if (b == std::string::npos)
+    return "";
+  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+}
+
+/// An optional positive cell: NaN when empty.
+double optional_positive(const CsvTable& t, const std::string& column, std::size_t row, double unit,
+                         const std::string& where) {
+  if (!t.has_column(column))
+    return NAN;
+  const std::string v = trim(t.text(column)[row]);
+  if (v.empty())
+    return NAN;
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  if (end == v.c_str() || *end != '\0' || !std::isfinite(x) || !(x > 0))
+    throw InputError(where + ": column " + column +
+                     ": expected a positive number or an empty "
+                     "cell, got '" +
+                     v + "'");
+  return x * unit;
+}
+
+} // namespace
+
+CampaignManifest read_campaign_manifest(const std::string& path) {
+  const CsvTable t = CsvTable::read(path);
+  for (const char* c : {"file", "material", "cycles", "specimen"})
+    if (!t.has_column(c))
+      throw InputError(path +
+                       ": manifest needs the columns file, material, cycles, specimen "
+                       "(optional delta_c_mm, j_tip_J_m2, width_mm, arm_thickness_mm); "
+                       "column '" +
+                       std::string(c) + "' is missing");
+  if (t.n_rows() == 0)
+    throw InputError(path + ": the manifest lists no specimen");
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  CampaignManifest m;
+  m.source = path;
+  std::map<std::tuple<std::string, double, std::string>, std::size_t> seen;
+  std::map<std::string, std::size_t> seen_file;
+  for (std::size_t i = 0; i < t.n_rows(); ++i) {
+    CampaignRow r;
+    r.manifest = path;
+    r.line = t.line_of_row(i);
+    const std::string where = r.where();
+    r.file_as_written = trim(t.text("file")[i]);
+    r.material = trim(t.text("material")[i]);
+    r.specimen = trim(t.text("specimen")[i]);
+    if (r.file_as_written.empty() || r.material.empty() || r.specimen.empty())
+      throw InputError(where + ": file, material and specimen must not be empty");
+    const std::string c = trim(t.text("cycles")[i]);
+    char* end = nullptr;
+    r.cycles = std::strtod(c.c_str(), &end);
+    if (c.empty() || *end != '\0' || !std::isfinite(r.cycles) || r.cycles < 0)
+      throw InputError(where + ": cycles: expected a number of moisture cycles >= 0, got '" + c +
+                       "'");
+    const std::filesystem::path f(r.file_as_written);
+    r.file = (f.is_absolute() ? f : folder / f).lexically_normal().string();
+    if (!std::filesystem::is_regular_file(r.file))
+      throw InputError(where + ": file '" + r.file_as_written + "' not found (looked for " +
+                       r.file + "; paths are relative to the manifest's folder)");
+    r.delta_c = optional_positive(t, "delta_c_mm", i, units::mm, where);
+    r.j_tip = optional_positive(t, "j_tip_J_m2", i, 1.0, where);
+    r.width = optional_positive(t, "width_mm", i, units::mm, where);
+    r.arm_thickness = optional_positive(t, "arm_thickness_mm", i, units::mm, where);
+    const auto key = std::make_tuple(r.material, r.cycles, r.specimen);
+    if (const auto it = seen.find(key); it != seen.end())
+      throw InputError(where + ": specimen '" + r.specimen + "' of " + r.material + " at " + c +
+                       " cycles is listed twice (first at line " + std::to_string(it->second) +
+                       ")");
+    seen.emplace(key, r.line);
+    const std::string canonical = std::filesystem::weakly_canonical(r.file).string();
+    if (const auto it = seen_file.find(canonical); it != seen_file.end())
+      throw InputError(where + ": file '" + r.file_as_written +
+                       "' is listed twice (first at line " + std::to_string(it->second) +
+                       "): one file is one specimen");
+    seen_file.emplace(canonical, r.line);
+    m.rows.push_back(r);
+  }
+  return m;
+}
+
+const char* to_string(SpecimenInput k) {
+  return k == SpecimenInput::rdelta ? "R(delta) table" : "raw test record";
+}
+
+SpecimenInput classify_specimen_file(const std::string& path) {
+  const CsvTable t = CsvTable::read(path);
+  return t.has_column("delta_mm") && t.has_column("R_J_m2") ? SpecimenInput::rdelta
+                                                            : SpecimenInput::raw_record;
+}
+
+CampaignSpecimen load_campaign_specimen(const CampaignRow& row, const RawRecordOptions& raw) {
+  CampaignSpecimen s;
+  s.row = row;
+  const std::string where = row.where();
+  try {
+    s.input = classify_specimen_file(row.file);
+    if (s.input == SpecimenInput::rdelta) {
+      const RDeltaData d = read_rdelta_csv(row.file);
+      if (d.replicates.size() != 1)
+        throw InputError(row.file + " holds " + std::to_string(d.replicates.size()) +
+                         " replicates; a manifest row is one specimen (split the file or list "
+                         "one row per replicate file)");
+      s.curve = d.replicates.front();
+      s.has_rdelta = true;
+    } else {
+      const auto records = read_test_records(row.file, raw.read);
+      if (records.size() != 1)
+        throw InputError(row.file + " holds " + std::to_string(records.size()) +
+                         " records; a manifest row is one specimen");
+      TestSpecimen spec = raw.specimen;
+      if (std::isfinite(row.width))
+        spec.width = row.width;
+      if (std::isfinite(row.arm_thickness))
+        spec.arm_thickness = row.arm_thickness;
+      const ReducedRecord rr = reduce_record(records.front(), spec, raw.reduce);
+      if (!rr.delta_root.empty()) {
+        s.curve = to_rdelta({rr}, row.file).replicates.front();
+        s.has_rdelta = true;
+      } else {
+        s.initiation = rr.energy.initiation;
+        s.plateau = rr.energy.plateau;
+        s.notes.push_back("no delta_root in the record: R(a) only (initiation and plateau by "
+                          "direct energy), no law");
+      }
+    }
+  } catch (const InputError& e) {
+    throw InputError(where + ": " + e.what());
+  } catch (const ComputationError& e) {
+    throw ComputationError(where + ": " + e.what());
+  }
+  return s;
+}
+
+} // namespace fiberbridge::analysis

@@ -1,0 +1,348 @@
+// Scene item `campaign` (section Campaign; issue 33): a durability campaign from its manifest to
+// the paper's Table 1 and ranking with bootstrap intervals (analysis/campaign_run.h), written by
+// campaign_writers.h. The Data, Fit and Bridging sections give every group's defaults; the Test
+// section and Specimen say how raw records are read and reduced. Groups run as independent tasks
+// over the MPI ranks (task_distributor.h); each group's numbers depend only on its specimens,
+// the options and its own seed, so 1 and N ranks give the same tables.
+#include "fiberbridge/analysis/campaign_run.h"
+#include "fiberbridge/app/analysis_steps.h"
+#include "fiberbridge/app/campaign_simulation.h"
+#include "fiberbridge/app/campaign_writers.h"
+#include "fiberbridge/app/items.h"
+#include "fiberbridge/app/scene.h"
+#include "fiberbridge/app/section.h"
+#include "fiberbridge/app/task_distributor.h"
+#include "fiberbridge/app/test_section.h"
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
+#include "fiberbridge/core/output_guard.h"
+#include "fiberbridge/core/units.h"
+
+#include <deal.II/base/patterns.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace fiberbridge::app {
+
+using units::mm;
+
+namespace {
+
+/// Campaign: the manifest and the bootstrap.
+struct CampaignSection {
+  std::string manifest;
+  int bootstrap_samples = 1000;
+  unsigned seed = 1;
+  double confidence = 0.95;
+  analysis::CampaignOptions::Interval interval = analysis::CampaignOptions::Interval::student_t;
+  std::vector<std::string> reference_materials;
+  double outlier_mads = 3.5;
+  bool fe_export = true;
+  bool simulate = false;
+  std::string model;
+
+  static void declare_parameters(dealii::ParameterHandler& prm) {
+    prm.declare_entry("Manifest", "", dealii::Patterns::Anything(),
+                      "CSV with columns file, material, cycles, specimen (one row per specimen; "
+                      "optional delta_c_mm, j_tip_J_m2, width_mm, arm_thickness_mm); files "
+                      "relative to the manifest: R(delta) tables or raw test records.");
+    prm.declare_entry("Bootstrap samples", "1000", dealii::Patterns::Integer(0, 1000000),
+                      "Resamples of whole specimens within each group (0: no intervals).");
+    prm.declare_entry("Seed", "1", dealii::Patterns::Integer(0, 2147483647),
+                      "Seed of the bootstrap; each group mixes it with its (material, cycles).");
+    prm.declare_entry("Confidence level", "0.95", dealii::Patterns::Double(0.5, 0.999),
+                      "Level of every interval.");
+    prm.declare_entry("Interval", "student t",
+                      dealii::Patterns::Selection("student t|expanded percentile|percentile"),
+                      "Bootstrap interval: student t (estimate -+ sqrt(n/(n-1)) t_{n-1} bootstrap "
+                      "standard deviations; covers its level with few specimens), expanded "
+                      "percentile (Hesterberg) or percentile (docs/design.md section 1).");
+    prm.declare_entry("Reference materials", "DF", dealii::Patterns::Anything(),
+                      "Comma-separated materials reported beside the others but not ranked "
+                      "(the seed's solid wood DF has no adhesive).");
+    prm.declare_entry("Outlier threshold", "3.5", dealii::Patterns::Double(1),
+                      "A specimen is named far from its group when its G_ss lies more than this "
+                      "many robust standard deviations (1.4826 MAD) from the group's median.");
+    prm.declare_entry("FE export", "true", dealii::Patterns::Bool(),
+                      "Write each group's trilinear law for LS-DYNA (MAT_186) and Abaqus.");
+    prm.declare_entry("Simulate laws", "false", dealii::Patterns::Bool(),
+                      "Put each group's law back in the specimen (the paper's Fig. 10): the "
+                      "simulated R(delta_root) against the group's measured curves, misfit per "
+                      "group. Uses the Specimen, Material and the model's section.");
+    prm.declare_entry("Simulation model", "auto", dealii::Patterns::Anything(),
+                      "Model for Simulate laws: auto (the first of this build's models that can: "
+                      "beam) or a model's name (beam).");
+  }
+  void parse_parameters(dealii::ParameterHandler& prm) {
+    manifest = prm.get("Manifest");
+    bootstrap_samples = prm.get_integer("Bootstrap samples");
+    seed = static_cast<unsigned>(prm.get_integer("Seed"));
+    confidence = prm.get_double("Confidence level");
+    const std::string iv = prm.get("Interval");
+    interval = iv == "percentile" ? analysis::CampaignOptions::Interval::percentile
+               : iv == "expanded percentile"
+                   ? analysis::CampaignOptions::Interval::expanded_percentile
+                   : analysis::CampaignOptions::Interval::student_t;
+    outlier_mads = prm.get_double("Outlier threshold");
+    fe_export = prm.get_bool("FE export");
+    simulate = prm.get_bool("Simulate laws");
+    model = prm.get("Simulation model");
+    const auto models = campaign_simulation_models();
+    if (simulate) {
+      if (model == "auto" && !models.empty())
+        model = models.front();
+      if (std::find(models.begin(), models.end(), model) == models.end()) {
+        std::string have;
+        for (const auto& m : models)
+          have += (have.empty() ? "" : ", ") + m;
+        throw InputError("Campaign/Simulation model: '" + model +
+                         "' cannot put the laws back in the specimen in this build (available: " +
+                         (have.empty() ? std::string("none") : have) + ")");
+      }
+    }
+    std::stringstream in(prm.get("Reference materials"));
+    std::string m;
+    while (std::getline(in, m, ',')) {
+      const auto b = m.find_first_not_of(" \t");
+      if (b != std::string::npos)
+        reference_materials.push_back(m.substr(b, m.find_last_not_of(" \t") - b + 1));
+    }
+    if (manifest.empty())
+      throw InputError("Campaign/Manifest: the scene runs 'campaign' but names no manifest");
+  }
+};
+
+/// "auto" or a positive number times `unit`; 0 for auto (the Data section's convention).
+double auto_or_positive(const std::string& v, const std::string& key, double unit) {
+  if (v == "auto")
+    return 0;
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  if (end == v.c_str() || *end != '\0' || !(x > 0) || !std::isfinite(x))
+    throw InputError(key + ": expected 'auto' or a positive number, got '" + v + "'");
+  return x * unit;
+}
+
+/// The group defaults from the Data, Fit and Bridging sections. Their section structs are local
+/// to items_analysis.cc, so the keys are read here as declared there (read only: nothing is
+/// written back into the handler).
+analysis::CampaignOptions group_defaults(dealii::ParameterHandler& prm) {
+  analysis::CampaignOptions o;
+  prm.enter_subsection("Data");
+  o.intervals = prm.get_integer("Intervals");
+  o.half_width = prm.get_integer("Smoothing half-width");
+  o.grid_points = prm.get_integer("Averaging grid points");
+  const std::string dc = prm.get("Delta c"), jt = prm.get("J tip");
+  prm.leave_subsection();
+  o.delta_c = auto_or_positive(dc, "Data/Delta c", mm);
+  o.j_tip = auto_or_positive(jt, "Data/J tip", 1.0);
+  if (o.half_width < 1 || 2 * o.half_width >= o.intervals)
+    throw InputError("Data/Smoothing half-width: must lie in [1, intervals/2), got " +
+                     std::to_string(o.half_width));
+  prm.enter_subsection("Fit");
+  o.d1 = prm.get_double("Delta 1") * mm;
+  o.d2 = prm.get_double("Delta 2") * mm;
+  o.free_breakpoints = prm.get_bool("Free breakpoints");
+  o.d1_min = prm.get_double("Delta 1 minimum") * mm;
+  o.d1_max = prm.get_double("Delta 1 maximum") * mm;
+  o.d2_max = prm.get_double("Delta 2 maximum") * mm;
+  prm.leave_subsection();
+  if (!o.free_breakpoints && !(o.d1 > 0 && o.d1 < o.d2))
+    throw InputError("Fit/Delta 1, Delta 2: need 0 < Delta 1 < Delta 2 (mm), got " +
+                     fmt(o.d1 / mm) + " and " + fmt(o.d2 / mm));
+  // rho_b's range (seed section 3.4): the Bridging section's fiber at its peeling toughness
+  // against the seed's fiber bundle at 50 J/m^2, at the Bridging section's opening.
+  prm.enter_subsection("Bridging");
+  o.fiber_low.E_f = prm.get_double("Fiber modulus") * units::GPa;
+  o.fiber_low.r_f = prm.get_double("Fiber radius") * units::um;
+  o.fiber_low.sigma_fb = prm.get_double("Fiber strength") * units::MPa;
+  o.fiber_low.G_c = prm.get_double("Peeling toughness");
+  o.rho_opening = prm.get_double("Opening") * mm;
+  prm.leave_subsection();
+  return o;
+}
+
+struct CampaignInputs {
+  std::string manifest_path;
+  CampaignSection section;
+  analysis::CampaignOptions options;
+  analysis::RawRecordOptions raw;
+};
+
+CampaignInputs campaign_inputs(SceneContext& ctx) {
+  CampaignInputs in;
+  in.section = parse_section<CampaignSection>(*ctx.prm, "Campaign");
+  in.manifest_path = std::filesystem::path(resolve_scene_path(in.section.manifest, ctx.scene_file))
+                         .lexically_normal()
+                         .string();
+  if (!std::filesystem::is_regular_file(in.manifest_path))
+    throw InputError(ctx.scene_file + ": Campaign/Manifest: file '" + in.section.manifest +
+                     "' not found");
+  in.options = group_defaults(*ctx.prm);
+  in.options.bootstrap_samples = in.section.bootstrap_samples;
+  in.options.seed = in.section.seed;
+  in.options.confidence = in.section.confidence;
+  in.options.interval = in.section.interval;
+  in.options.outlier_mads = in.section.outlier_mads;
+  // Raw records: read and reduced as `reduce` does (Test section; Specimen for the geometry,
+  // which a manifest row's width_mm / arm_thickness_mm override).
+  const auto t = parse_section<TestSection>(*ctx.prm, "Test");
+  in.raw.read = t.read_options(ctx.scene_file);
+  const specimen::Specimen s = ctx.specimen();
+  in.raw.specimen.width = s.width;
+  in.raw.specimen.arm_thickness = s.arm_thickness();
+  in.raw.specimen.length = s.length;
+  if (t.use_specimen_initial_crack)
+    in.raw.specimen.initial_crack = s.initial_crack;
+  in.raw.specimen.pin_to_arm_midplane = t.pin_to_arm_midplane > 0 ? t.pin_to_arm_midplane : NAN;
+  in.raw.specimen.pin_to_block_edge = t.pin_to_block_edge > 0 ? t.pin_to_block_edge : NAN;
+  in.raw.reduce.large_displacement_correction = t.large_displacement_correction;
+  in.raw.reduce.plateau_fraction = t.plateau_fraction;
+  in.raw.reduce.smoothing_window = t.smoothing_window > 0 ? t.smoothing_window : NAN;
+  return in;
+}
+
+// A group's bootstrap as text for the task distributor: every double printed to round trip
+// exactly (%.17g; NaN as "nan"), so the gathered groups equal the ones a single rank computes.
+std::string encode_group(const analysis::CampaignGroup& g) {
+  std::string s;
+  char buf[64];
+  auto put = [&](double v) {
+    std::snprintf(buf, sizeof buf, "%.17g ", v);
+    s += buf;
+  };
+  s += std::to_string(g.samples.size()) + " " + std::to_string(g.failed_samples) + " ";
+  for (const auto& row : g.samples)
+    for (double v : row)
+      put(v);
+  for (const auto& i : g.ci) {
+    put(i.lo);
+    put(i.hi);
+  }
+  s += std::to_string(g.law_delta.size()) + " ";
+  for (std::size_t i = 0; i < g.law_delta.size(); ++i) {
+    put(g.law_delta[i]);
+    put(g.law_lo[i]);
+    put(g.law_hi[i]);
+  }
+  s += std::to_string(g.notes.size()) + "\n";
+  for (const auto& n : g.notes)
+    s += n + "\n";
+  return s;
+}
+
+void decode_group(const std::string& text, analysis::CampaignGroup& g) {
+  std::istringstream in(text);
+  auto get = [&] {
+    std::string w;
+    in >> w;
+    return std::strtod(w.c_str(), nullptr);
+  };
+  std::size_t ns = 0, nb = 0, nn = 0;
+  in >> ns >> g.failed_samples;
+  g.samples.assign(ns, {});
+  for (auto& row : g.samples)
+    for (double& v : row)
+      v = get();
+  for (auto& i : g.ci) {
+    i.lo = get();
+    i.hi = get();
+  }
+  in >> nb;
+  g.law_delta.resize(nb);
+  g.law_lo.resize(nb);
+  g.law_hi.resize(nb);
+  for (std::size_t i = 0; i < nb; ++i) {
+    g.law_delta[i] = get();
+    g.law_lo[i] = get();
+    g.law_hi[i] = get();
+  }
+  in >> nn;
+  std::string line;
+  std::getline(in, line);
+  g.notes.clear();
+  for (std::size_t i = 0; i < nn && std::getline(in, line); ++i)
+    g.notes.push_back(line);
+}
+
+/// Groups as tasks over the ranks of the simulation communicator; every rank gets every group.
+void run_groups_across_ranks(std::vector<analysis::CampaignGroup>& groups,
+                             const std::vector<analysis::CampaignSpecimen>& specimens,
+                             const analysis::CampaignOptions& o,
+                             const analysis::CampaignProgress& progress) {
+  MPI_Comm comm = simulation_communicator();
+  std::vector<double> cost;
+  for (const auto& g : groups)
+    cost.push_back(static_cast<double>(g.members.size()));
+  const auto results = run_tasks_across_ranks(
+      groups.size(),
+      [&](std::size_t i) {
+        analysis::CampaignGroup g = groups[i];
+        analysis::analyse_campaign_group(g, specimens, o);
+        return encode_group(g);
+      },
+      comm, cost);
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    // The point estimate is recomputed here (deterministic, a fraction of the bootstrap's cost)
+    // rather than shipped: it carries the averaged curve and the laws the writers need.
+    auto& g = groups[i];
+    g.estimate = analysis::estimate_group(specimens, g.members, o, true);
+    g.seed = analysis::group_seed(o.seed, g.material, g.cycles);
+    decode_group(results.output[i], g);
+    if (progress)
+      progress(i + 1, groups.size(), g);
+  }
+}
+
+} // namespace
+
+void declare_campaign_section(dealii::ParameterHandler& prm) {
+  declare_section<CampaignSection>(prm, "Campaign");
+}
+
+void check_campaign_item(SceneContext& ctx) {
+  // The manifest's own errors (missing file, duplicates: manifest:line) before any item runs.
+  analysis::read_campaign_manifest(campaign_inputs(ctx).manifest_path);
+}
+
+void run_campaign_item(SceneContext& ctx) {
+  const CampaignInputs in = campaign_inputs(ctx);
+  const auto manifest = analysis::read_campaign_manifest(in.manifest_path);
+  const auto t0 = std::chrono::steady_clock::now();
+  const bool speak = output_enabled();
+  auto progress = [&](std::size_t done, std::size_t all, const analysis::CampaignGroup& g) {
+    if (!speak)
+      return;
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::cerr << "campaign: group " << done << "/" << all << " " << g.material << " at "
+              << fmt(g.cycles) << " cycles (" << g.members.size() << " specimens, "
+              << g.samples.size() << " bootstrap samples), " << fmt(s, 3) << " s\n";
+  };
+  int ranks = 1;
+  MPI_Comm_size(simulation_communicator(), &ranks);
+  analysis::GroupRunner runner;
+  if (ranks > 1)
+    runner = &run_groups_across_ranks;
+  const auto result = analysis::analyse_campaign(manifest, in.raw, in.options,
+                                                 in.section.reference_materials, progress, runner);
+  CampaignWriteOptions w;
+  w.fe_export = in.section.fe_export;
+  w.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (in.section.simulate)
+    w.simulations = simulate_campaign_laws(ctx, result, in.section.model);
+  // Everything is computed before the first file is written: a campaign that fails leaves no
+  // table behind (and no summary.json, scene.cc).
+  if (!w.simulations.empty())
+    w.simulation_pngs = write_campaign_simulation_files(result, w.simulations, ctx.output_dir);
+  write_campaign_outputs(result, w, ctx.output_dir, ctx.summary);
+  ctx.summary["campaign"]["ranks"] = ranks;
+}
+
+} // namespace fiberbridge::app

@@ -1,0 +1,465 @@
+// The durability campaign (issue 33): a synthetic campaign from known laws recovered within a
+// stated tolerance, the bootstrap intervals' coverage, the ranking, determinism, the paper's own
+// Table 1 as group values, bad manifests, and the laws as LS-DYNA / Abaqus take them.
+#include "fiberbridge/analysis/campaign_run.h"
+#include "fiberbridge/analysis/campaign_synthetic.h"
+#include "fiberbridge/analysis/cohesive_export.h"
+#include "fiberbridge/analysis/degradation.h"
+#include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+using namespace fiberbridge;
+using namespace fiberbridge::analysis;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string table1 = std::string(FIBERBRIDGE_DATA_DIR) + "/reference/seed_table1.csv";
+
+fs::path scratch(const std::string& name) {
+  const fs::path p = fs::temp_directory_path() / ("fiberbridge_campaign_tests_" + name);
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+CampaignResult synthetic_campaign(const std::string& name, const SyntheticCampaignOptions& so,
+                                  int samples, unsigned seed = 1) {
+  const auto truth = table1_truth(read_property_table(table1));
+  const std::string m = write_synthetic_campaign(scratch(name).string(), truth, so);
+  CampaignOptions o;
+  o.bootstrap_samples = samples;
+  o.seed = seed;
+  return analyse_campaign(read_campaign_manifest(m), {}, o, {"DF"});
+}
+
+/// Equal, NaN equal to NaN (l_b and rho_b are NaN without crack lengths in the data).
+bool same(double a, double b) {
+  return a == b || (std::isnan(a) && std::isnan(b));
+}
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+}
+
+/// What the method itself may miss by (a fraction of the group's peak stress), measured with
+/// the test below: the adhesives' sigma1 within 2.6 % of the peak (Eq. 6's smoothing over
+/// +-k delta_c/n = +-0.1 mm rounds the peak at d1 = 0.1 mm; docs/verification.md, "Closed
+/// loop"), sigma2 within 0.6 %; DF within 9.9 %: its laws are small (G_B 50-300 J/m^2 against
+/// 4 J/m^2 noise) and two of them rise after d1 (sigma1 < sigma2), where the smoothing window,
+/// which spans the whole first segment, pulls sigma1 towards the second.
+double method_allowance(const std::string& material) {
+  return material == "DF" ? 0.12 : 0.04;
+}
+
+} // namespace
+
+// Every group's trilinear values against the law it was made from. Tolerance: the group mean of
+// 5 specimens with 10 % independent scatter on sigma1 and sigma2 lies within 3 standard errors
+// (3 x 10 %/sqrt(5) = 13.4 %) of the truth for all but ~0.3 % of quantities, plus what the
+// method itself may miss (method_allowance, measured by the zero-scatter test below).
+TEST(CampaignSynthetic, TrilinearValuesWithinToleranceOfTruth) {
+  SyntheticCampaignOptions so;
+  so.seed = 11;
+  const auto r = synthetic_campaign("truth", so, 0);
+  const auto truth = table1_truth(read_property_table(table1));
+  ASSERT_EQ(r.groups.size(), truth.size());
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const auto& g = r.groups[i];
+    const auto& t = truth[i].law;
+    ASSERT_EQ(g.material, truth[i].material);
+    ASSERT_TRUE(g.estimate.ok) << g.material << " " << g.cycles << ": " << g.estimate.failure;
+    const double peak = std::max(t.s1, t.s2), m = method_allowance(g.material);
+    EXPECT_NEAR(g.estimate.tri.s1, t.s1, 0.134 * t.s1 + m * peak) << g.material << g.cycles;
+    EXPECT_NEAR(g.estimate.tri.s2, t.s2, 0.134 * t.s2 + m * peak) << g.material << g.cycles;
+    EXPECT_NEAR(g.estimate.J1, t.j1(), 0.134 * t.j1() + m * t.area()) << g.material;
+    EXPECT_NEAR(g.estimate.J2, t.j2(), 0.134 * t.j2() + m * t.area()) << g.material;
+    // G_ss = J_tip + area: the area's scatter as above, J_tip's 2 % scatter over 5 specimens.
+    EXPECT_NEAR(g.estimate.G_ss, 200 + t.area(), 0.134 * t.area() + 0.03 * 200) << g.material;
+    EXPECT_NEAR(g.estimate.j_tip, 200, 0.03 * 200) << g.material;
+    EXPECT_DOUBLE_EQ(g.estimate.delta_c, t.dc); // the manifest's delta_c_mm (seed: fixed)
+  }
+}
+
+// Without specimen scatter the campaign measures the method alone: Eq. 6 and the fit on Eq. 2
+// data with 4 J/m^2 noise.
+TEST(CampaignSynthetic, WithoutScatterTheMethodAloneIsClose) {
+  SyntheticCampaignOptions so;
+  so.stress_cv = 0;
+  so.seed = 5;
+  const auto r = synthetic_campaign("no_scatter", so, 0);
+  const auto truth = table1_truth(read_property_table(table1));
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const auto& g = r.groups[i];
+    const auto& t = truth[i].law;
+    ASSERT_TRUE(g.estimate.ok);
+    const double peak = std::max(t.s1, t.s2);
+    const double m = method_allowance(g.material) * peak;
+    EXPECT_NEAR(g.estimate.tri.s1, t.s1, m) << g.material << " " << g.cycles;
+    EXPECT_NEAR(g.estimate.tri.s2, t.s2, m) << g.material << " " << g.cycles;
+  }
+}
+
+// Coverage of the 95 % intervals over repeated campaigns (other seeds of the data and of the
+// bootstrap): 6 campaigns x 20 groups x 6 quantities. Measured over 20 campaigns
+// (docs/verification.md, "Durability campaign"): 0.945 with the default student t interval,
+// 0.89 expanded percentile, 0.82 percentile (a percentile interval cannot reach beyond the range
+// of 5 specimens). The binomial standard error of 720 trials at 0.945 is 0.0085: the bounds
+// (0.90, 0.985) are 5 of them either side, so the test fails for intervals that are too narrow
+// (the percentile ones would) or vacuous, not by chance.
+TEST(CampaignSynthetic, IntervalCoverageOverRepeatedCampaigns) {
+  int hit = 0, all = 0;
+  const auto truth = table1_truth(read_property_table(table1));
+  for (int c = 0; c < 6; ++c) {
+    SyntheticCampaignOptions so;
+    so.seed = 100 + c;
+    const auto r = synthetic_campaign("coverage", so, 200, 7 + c);
+    for (std::size_t i = 0; i < r.groups.size(); ++i) {
+      const auto& g = r.groups[i];
+      const auto& t = truth[i].law;
+      const std::vector<std::pair<GroupQuantity, double>> checks{
+          {GroupQuantity::sigma1, t.s1 / 1e3},   {GroupQuantity::sigma2, t.s2 / 1e3},
+          {GroupQuantity::J1, t.j1()},           {GroupQuantity::J2, t.j2()},
+          {GroupQuantity::G_ss, 200 + t.area()}, {GroupQuantity::J_tip, 200.0}};
+      for (const auto& [q, v] : checks) {
+        const auto& ci = g.ci[static_cast<std::size_t>(q)];
+        ++all;
+        hit += ci.lo <= v && v <= ci.hi ? 1 : 0;
+      }
+    }
+  }
+  const double coverage = static_cast<double>(hit) / all;
+  std::cout << "coverage of the 95 % intervals: " << hit << "/" << all << " = " << coverage << "\n";
+  EXPECT_GT(coverage, 0.90);
+  EXPECT_LT(coverage, 0.985);
+}
+
+// The ranking: with 3 % specimen scatter the campaign must give the paper's order and be sure of
+// it; at the bundled 10 % the order is recovered in 19 of 20 campaigns (docs/verification.md).
+TEST(CampaignSynthetic, RankingRecovered) {
+  SyntheticCampaignOptions so;
+  so.stress_cv = 0.03;
+  so.seed = 3;
+  const auto r = synthetic_campaign("ranking", so, 200);
+  std::vector<std::string> order;
+  for (const auto& m : r.ranking.ranks)
+    order.push_back(m.material);
+  EXPECT_EQ(order, (std::vector<std::string>{"PF", "EPI", "PRF", "PVA"}));
+  EXPECT_EQ(r.ranking.reference, std::vector<std::string>{"DF"});
+  for (const auto& p : r.ranking.pairs)
+    EXPECT_GT(p.p_first_ahead, 0.8) << p.first << " ahead of " << p.second;
+}
+
+// Deterministic given the seed; a group's intervals do not depend on the other groups (its seed
+// mixes only the campaign's seed and its own key), so the groups could run anywhere.
+TEST(CampaignBootstrap, DeterministicAndIndependentOfOtherGroups) {
+  SyntheticCampaignOptions so;
+  so.replicates = 4;
+  const auto truth = table1_truth(read_property_table(table1));
+  const std::string m = write_synthetic_campaign(scratch("determinism").string(), truth, so);
+  CampaignOptions o;
+  o.bootstrap_samples = 50;
+  const auto manifest = read_campaign_manifest(m);
+  const auto a = analyse_campaign(manifest, {}, o, {"DF"});
+  const auto b = analyse_campaign(manifest, {}, o, {"DF"});
+  CampaignManifest only_pf = manifest;
+  only_pf.rows.erase(std::remove_if(only_pf.rows.begin(), only_pf.rows.end(),
+                                    [](const CampaignRow& r) { return r.material != "PF"; }),
+                     only_pf.rows.end());
+  const auto c = analyse_campaign(only_pf, {}, o, {});
+  for (std::size_t i = 0; i < a.groups.size(); ++i)
+    for (std::size_t k = 0; k < n_group_quantities; ++k) {
+      EXPECT_TRUE(same(a.groups[i].ci[k].lo, b.groups[i].ci[k].lo));
+      EXPECT_TRUE(same(a.groups[i].ci[k].hi, b.groups[i].ci[k].hi));
+    }
+  for (const auto& g : c.groups) {
+    const auto it = std::find_if(a.groups.begin(), a.groups.end(), [&](const CampaignGroup& x) {
+      return x.material == g.material && x.cycles == g.cycles;
+    });
+    ASSERT_NE(it, a.groups.end());
+    for (std::size_t k = 0; k < n_group_quantities; ++k)
+      EXPECT_TRUE(same(it->ci[k].lo, g.ci[k].lo));
+  }
+  o.seed = 2;
+  const auto d = analyse_campaign(manifest, {}, o, {"DF"});
+  EXPECT_NE(a.groups[0].ci[1].lo, d.groups[0].ci[1].lo) << "the seed must matter";
+}
+
+// The paper's Table 1 given as group values: the campaign's degradation and ranking are the
+// `rank` command's (degradation.h) on the printed table, and reproduce the printed slopes and R^2.
+TEST(CampaignTable1, SeedValuesReproduceThePapersSlopesAndRanking) {
+  const auto table = read_property_table(table1);
+  std::vector<CampaignGroup> groups;
+  for (const auto& mat : {"PVA", "EPI", "PRF", "PF", "DF"})
+    for (std::size_t c = 0; c < table.cycles.size(); ++c) {
+      CampaignGroup g;
+      g.material = mat;
+      g.cycles = table.cycles[c];
+      g.estimate.ok = g.estimate.has_law = true;
+      g.estimate.tri = {0.1e-3, table.find(mat, "sigma1")->values[c] * 1e3, 1e-3,
+                        table.find(mat, "sigma2")->values[c] * 1e3, seed_delta_c_mm(mat) * 1e-3};
+      g.estimate.J1 = table.find(mat, "J1")->values[c];
+      g.estimate.J2 = table.find(mat, "J2")->values[c];
+      g.estimate.l_b = table.find(mat, "lb")->values[c] * 1e-3;
+      groups.push_back(g);
+    }
+  const auto deg = campaign_degradation(groups, 0.95);
+  const auto printed = analyse_degradation(table);
+  int compared = 0;
+  for (const auto& p : printed) {
+    const auto it = std::find_if(deg.begin(), deg.end(), [&](const CampaignDegradation& d) {
+      return d.material == p.material && d.property == p.property;
+    });
+    ASSERT_NE(it, deg.end()) << p.material << " " << p.property;
+    ASSERT_TRUE(it->has_slope);
+    // Same numbers through the same regression: equal to rounding of the unit conversions.
+    EXPECT_NEAR(it->paper.fit.slope, p.fit.slope, 1e-9 * (1 + std::abs(p.fit.slope)));
+    EXPECT_NEAR(it->paper.fit.r2, p.fit.r2, 1e-9);
+    EXPECT_EQ(it->paper.significant, p.significant);
+    // The printed slope and R^2 (rounded or truncated, degradation.h) of the four adhesives;
+    // DF's printed rows are known not to follow from its printed values (docs/design.md
+    // section 1, "Degradation and ranking": the 16-cycle row is inconsistent).
+    if (p.has_printed && p.material != "DF") {
+      EXPECT_TRUE(p.matches_printed) << p.material << " " << p.property;
+      ++compared;
+    }
+    EXPECT_TRUE(std::isnan(it->p_value)) << "no bootstrap, no p";
+  }
+  EXPECT_EQ(compared, 16); // sigma1, J1, sigma2, J2 of the four adhesives
+  const auto ranking = campaign_ranking(groups, {"DF"});
+  std::vector<std::string> order;
+  for (const auto& m : ranking.ranks)
+    order.push_back(m.material);
+  EXPECT_EQ(order, (std::vector<std::string>{"PF", "EPI", "PRF", "PVA"}));
+  EXPECT_EQ(ranking.reference, std::vector<std::string>{"DF"});
+}
+
+// Bad manifests: every error names manifest:line.
+TEST(CampaignManifest, BadManifestsNameTheLine) {
+  const fs::path d = scratch("bad");
+  const auto truth = table1_truth(read_property_table(table1));
+  SyntheticCampaignOptions so;
+  so.replicates = 2;
+  write_synthetic_campaign(d.string(), {truth[0]}, so); // PVA_c0_s1.csv, PVA_c0_s2.csv
+  auto expect_error = [&](const std::string& text, const std::string& what) {
+    write(d / "m.csv", text);
+    try {
+      read_campaign_manifest((d / "m.csv").string());
+      ADD_FAILURE() << "no error for: " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  const std::string head = "file,material,cycles,specimen\n";
+  expect_error(head + "PVA_c0_s1.csv,PVA,0,a\nmissing.csv,PVA,0,b\n", "m.csv:3");
+  expect_error(head + "PVA_c0_s1.csv,PVA,0,a\nPVA_c0_s2.csv,PVA,0,a\n", "listed twice");
+  expect_error(head + "PVA_c0_s1.csv,PVA,0,a\nPVA_c0_s1.csv,PVA,0,b\n", "m.csv:3: file");
+  expect_error(head + "PVA_c0_s1.csv,PVA,-8,a\n", "m.csv:2: cycles");
+  expect_error("file,material,cycles\nPVA_c0_s1.csv,PVA,0\n", "'specimen' is missing");
+  expect_error(head, "no data rows");
+  expect_error("file,material,cycles,specimen,delta_c_mm\nPVA_c0_s1.csv,PVA,0,a,-1\n",
+               "m.csv:2: column delta_c_mm");
+}
+
+// A group of one specimen has no interval (said so), a material with two cycle counts no slope
+// (said so), and neither is an error.
+TEST(CampaignManifest, OneSpecimenAndTwoCycleCountsAreNotes) {
+  const fs::path d = scratch("notes");
+  auto truth = table1_truth(read_property_table(table1));
+  truth.resize(2); // PVA at 0 and 8 cycles
+  SyntheticCampaignOptions so;
+  so.replicates = 3;
+  write_synthetic_campaign(d.string(), truth, so);
+  write(d / "m.csv", "file,material,cycles,specimen,delta_c_mm\nPVA_c0_s1.csv,PVA,0,a,6\n"
+                     "PVA_c8_s1.csv,PVA,8,a,6\nPVA_c8_s2.csv,PVA,8,b,6\nPVA_c8_s3.csv,PVA,8,c,6\n");
+  CampaignOptions o;
+  o.bootstrap_samples = 50;
+  const auto r = analyse_campaign(read_campaign_manifest((d / "m.csv").string()), {}, o, {});
+  ASSERT_EQ(r.groups.size(), 2u);
+  EXPECT_TRUE(r.groups[0].estimate.ok);
+  EXPECT_FALSE(r.groups[0].has_interval());
+  EXPECT_TRUE(std::isnan(r.groups[0].ci[1].lo));
+  bool said = false;
+  for (const auto& n : r.groups[0].notes)
+    said = said || n.find("one specimen, no interval") != std::string::npos;
+  EXPECT_TRUE(said);
+  EXPECT_TRUE(r.groups[1].has_interval());
+  ASSERT_FALSE(r.degradation.empty());
+  for (const auto& dd : r.degradation) {
+    EXPECT_FALSE(dd.has_slope);
+    EXPECT_NE(dd.note.find("needs at least 3"), std::string::npos) << dd.note;
+  }
+  EXPECT_TRUE(r.ranking.ranks.empty());
+  EXPECT_EQ(r.ranking.not_ranked, std::vector<std::string>{"PVA"});
+}
+
+// One group, one kind of input: an R(delta) table beside a raw record is an error naming both
+// lines. The raw record is one of the shared real records (data/dcb_records, MIT licence).
+TEST(CampaignManifest, MixedInputsInOneGroupAreAnError) {
+  const fs::path d = scratch("mixed");
+  const auto truth = table1_truth(read_property_table(table1));
+  SyntheticCampaignOptions so;
+  so.replicates = 1;
+  write_synthetic_campaign(d.string(), {truth[0]}, so);
+  const std::string record =
+      std::string(FIBERBRIDGE_DATA_DIR) + "/dcb_records/DCB-01_Toughness.csv";
+  write(d / "m.csv",
+        "file,material,cycles,specimen\nPVA_c0_s1.csv,PVA,0,a\n" + record + ",PVA,0,b\n");
+  RawRecordOptions raw;
+  raw.read.columns = RecordColumnMap::parse(
+      "time_s: Time, opening_mm: Disp, load_N: Force, a_mm: CrackExt", "test");
+  raw.specimen.width = 25e-3;
+  raw.specimen.arm_thickness = 2.7e-3;
+  try {
+    analyse_campaign(read_campaign_manifest((d / "m.csv").string()), raw, {}, {});
+    ADD_FAILURE() << "mixed inputs accepted";
+  } catch (const InputError& e) {
+    const std::string w = e.what();
+    EXPECT_NE(w.find("m.csv:3"), std::string::npos) << w;
+    EXPECT_NE(w.find("m.csv:2"), std::string::npos) << w;
+    EXPECT_NE(w.find("one kind of input"), std::string::npos) << w;
+  }
+}
+
+// LS-DYNA: the normalised curve and T, GIC give back delta_c (LS-DYNA's ultimate separation is
+// GIC / (T x area of the curve)) and the law's area and peak; exact up to rounding.
+TEST(CohesiveExport, LsDynaCurveKeepsAreaPeakAndDeltaC) {
+  const auto law = trilinear_polyline(0.1e-3, 661e3, 1e-3, 187e3, 6e-3);
+  const auto c = lsdyna_normalised_curve(law);
+  EXPECT_NEAR(c.ultimate_separation(), 6e-3, 1e-15);
+  EXPECT_NEAR(c.GIC, law.area(), 1e-9);
+  EXPECT_DOUBLE_EQ(c.T, 661e3);
+  EXPECT_DOUBLE_EQ(*std::max_element(c.t_over_T.begin(), c.t_over_T.end()), 1.0);
+  const std::string card = lsdyna_mat_cohesive_general(law, 7, 1007, "PVA control");
+  EXPECT_NE(card.find("*MAT_COHESIVE_GENERAL"), std::string::npos);
+  // T = 0.661 MPa, GIC = area in N/mm (0.8822 N/mm for this law).
+  EXPECT_NE(card.find("1.0,0.661,0.661,0.0"), std::string::npos) << card;
+  EXPECT_NE(card.find("7,1.0e-9,0,1,0,1007,"), std::string::npos) << card;
+  EXPECT_NE(card.find(",0.88215,0.88215\n"), std::string::npos) << card;
+}
+
+// Abaqus: the traction the tabular damage gives (linear D between rows, as Abaqus interpolates)
+// keeps the law's area and peak to 0.1 % with 200 rows per segment; D rises from 0 to 1.
+TEST(CohesiveExport, AbaqusTableKeepsAreaAndPeak) {
+  for (const auto& law : {trilinear_polyline(0.1e-3, 661e3, 1e-3, 187e3, 6e-3),
+                          trilinear_polyline(0.1e-3, 7e3, 1e-3, 34e3, 3.5e-3)}) {
+    const auto t = abaqus_damage_table(law, 200);
+    EXPECT_EQ(t.D.front(), 0.0);
+    EXPECT_EQ(t.D.back(), 1.0);
+    for (std::size_t i = 1; i < t.D.size(); ++i)
+      EXPECT_GE(t.D[i], t.D[i - 1]);
+    double area = 0, peak = 0, prev = 0;
+    const int n = 200000;
+    const double dc = law.delta.back();
+    for (int i = 1; i <= n; ++i) {
+      const double d = dc * i / n, s = t.traction(d);
+      area += 0.5 * (s + prev) * dc / n;
+      peak = std::max(peak, s);
+      prev = s;
+    }
+    EXPECT_NEAR(area, law.area(), 1e-3 * law.area());
+    EXPECT_NEAR(peak, law.peak(), 1e-3 * law.peak());
+    const std::string inp = abaqus_cohesive_material(law, "X");
+    EXPECT_NE(inp.find("*DAMAGE EVOLUTION, TYPE=DISPLACEMENT, SOFTENING=TABULAR"),
+              std::string::npos);
+    EXPECT_NE(inp.find("*ELASTIC, TYPE=TRACTION"), std::string::npos);
+  }
+}
+
+// l_b (crack growth to the peak-stress opening d1, seed section 3.4) where the R(delta) files
+// carry crack lengths, and the rho_b range from it: a group whose files have a_mm = 100 + 67
+// delta_mm gives l_b = 6.7 mm (the seed's PVA control) whatever the specimen.
+TEST(CampaignGroup, ZoneLengthFromCrackLengthsAndTheDensityRange) {
+  const fs::path d = scratch("lb");
+  const auto truth = table1_truth(read_property_table(table1));
+  SyntheticCampaignOptions so;
+  so.replicates = 3;
+  const std::string m = write_synthetic_campaign(d.string(), {truth[0]}, so);
+  // Add a crack-length column to every file (same rows, a linear in delta).
+  for (int k = 1; k <= 3; ++k) {
+    const fs::path f = d / ("PVA_c0_s" + std::to_string(k) + ".csv");
+    std::ifstream in(f);
+    std::string line, out;
+    while (std::getline(in, line)) {
+      if (line.empty() || line[0] == '#')
+        out += line + "\n";
+      else if (line.rfind("replicate", 0) == 0)
+        out += line + ",a_mm\n";
+      else {
+        const double delta_mm = std::stod(line.substr(line.find(',', line.find(',') + 1) + 1));
+        out += line + "," + std::to_string(100 + 67 * delta_mm) + "\n";
+      }
+    }
+    in.close();
+    write(f, out);
+  }
+  CampaignOptions o;
+  o.bootstrap_samples = 20;
+  const auto r = analyse_campaign(read_campaign_manifest(m), {}, o, {});
+  ASSERT_EQ(r.groups.size(), 1u);
+  const auto& g = r.groups[0];
+  ASSERT_TRUE(g.estimate.ok) << g.estimate.failure;
+  // Linear interpolation of a linear column: exact to the printed digits (std::to_string, 1e-6).
+  EXPECT_NEAR(g.estimate.l_b, 6.7e-3, 1e-8);
+  EXPECT_NEAR(r.specimens[0].l_b, 6.7e-3, 1e-8);
+  ASSERT_TRUE(std::isfinite(g.estimate.rho_low));
+  EXPECT_LT(g.estimate.rho_low, g.estimate.rho_high);
+  // The range is the model's at the fitted sigma1 and the group's l_b (bridging_model.h), for
+  // the tracheid (Bridging section defaults) and the seed's bundle at 50 J/m^2.
+  const auto rho = [&](const BridgingFiber& f) {
+    return bridged_density(g.estimate.tri.s1, 0.1e-3, g.estimate.l_b, f,
+                           BridgingMechanism::governing, false);
+  };
+  const double a1 = rho(seed_tracheid_fiber()), a2 = rho(seed_bundle_fiber(50));
+  EXPECT_DOUBLE_EQ(g.estimate.rho_low, std::min(a1, a2));
+  EXPECT_DOUBLE_EQ(g.estimate.rho_high, std::max(a1, a2));
+  EXPECT_TRUE(std::isfinite(g.ci[static_cast<std::size_t>(GroupQuantity::rho_high)].hi));
+}
+
+// A raw record that measured delta_root becomes the specimen's R(delta_root) (reduce's direct
+// energy, to_rdelta); one without stays R(a) only. The shared record DCB-01 (data/dcb_records)
+// with a made-up delta_root column (a fifth of the opening: only the plumbing is tested here).
+TEST(CampaignSpecimen, RawRecordWithDeltaRootGivesRDelta) {
+  const fs::path d = scratch("raw");
+  const std::string record =
+      std::string(FIBERBRIDGE_DATA_DIR) + "/dcb_records/DCB-01_Toughness.csv";
+  std::ifstream in(record);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r')
+      line.pop_back();
+    if (line.rfind("Time", 0) == 0)
+      out += line + ",Root\n";
+    else {
+      const auto c1 = line.find(','), c2 = line.find(',', c1 + 1);
+      out += line + "," + std::to_string(0.2 * std::stod(line.substr(c1 + 1, c2 - c1 - 1))) + "\n";
+    }
+  }
+  write(d / "with_root.csv", out);
+  write(d / "m.csv", "file,material,cycles,specimen\nwith_root.csv,X,0,a\n" + record + ",Y,0,b\n");
+  RawRecordOptions raw;
+  raw.read.columns = RecordColumnMap::parse(
+      "time_s: Time, opening_mm: Disp, load_N: Force, a_mm: CrackExt, delta_root_mm: Root", "t");
+  raw.specimen.width = 25e-3;
+  raw.specimen.arm_thickness = 2.7e-3;
+  const auto manifest = read_campaign_manifest((d / "m.csv").string());
+  const auto a = load_campaign_specimen(manifest.rows[0], raw);
+  EXPECT_EQ(a.input, SpecimenInput::raw_record);
+  EXPECT_TRUE(a.has_rdelta);
+  EXPECT_GT(a.curve.delta.size(), 5u);
+  EXPECT_EQ(a.curve.a.size(), a.curve.delta.size());
+  raw.read.columns =
+      RecordColumnMap::parse("time_s: Time, opening_mm: Disp, load_N: Force, a_mm: CrackExt", "t");
+  const auto b = load_campaign_specimen(manifest.rows[1], raw);
+  EXPECT_FALSE(b.has_rdelta);
+  EXPECT_TRUE(std::isfinite(b.plateau));
+  EXPECT_TRUE(std::isfinite(b.initiation));
+}
