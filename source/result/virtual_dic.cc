@@ -301,7 +301,7 @@ VirtualTestFiles VirtualDicTest::write(const std::string& directory,
 
   // The state at time t: linear in time between the states that bracket it (between two
   // recorded equilibria the tip moves by one element; the fields and the truth alike are
-  // interpolated, docs/design.md section 4, "Virtual DIC test").
+  // interpolated, docs/design.md section 2, "Virtual DIC test").
   struct Blend {
     std::size_t a, b;
     double w;

@@ -1,5 +1,5 @@
 #pragma once
-// The virtual test (issue 32, item 5; docs/design.md section 4, "Virtual DIC test"): what a DIC
+// The virtual test (issue 32, item 5; docs/design.md section 2, "Virtual DIC test"): what a DIC
 // system and a testing machine would write for a simulated DCB run. A model hands over its
 // equilibrium states (load-point opening, load, the crack's truth and the displacements at the
 // points of a regular grid in the reference configuration); this writes
