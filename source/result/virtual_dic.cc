@@ -6,10 +6,12 @@
 #include "fiberbridge/core/units.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <random>
 
 namespace fiberbridge::result {
@@ -175,6 +177,21 @@ std::string num(double v) {
   return b;
 }
 
+/// Appends the values with `sep` between them and a line end (a frame has ~10^4 such lines).
+void append_row(std::string& t, std::initializer_list<double> values, const char* sep) {
+  char b[32];
+  bool first = true;
+  for (const double v : values) {
+    if (!first)
+      t += sep;
+    first = false;
+    // to_chars: the shortest-path printer, several times faster than printf's %.9g.
+    const auto r = std::to_chars(b, b + sizeof b, v, std::chars_format::general, 9);
+    t.append(b, r.ptr);
+  }
+  t += '\n';
+}
+
 void write_text(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
   {
@@ -234,12 +251,11 @@ void write_dic_frame(const std::string& path, const VirtualDicSettings& s, const
                  exy = ok ? flip * f.strains.exy[k] : 0;
     switch (s.layout) {
     case DicLayout::vic:
-      t += num(x) + ", " + num(y) + ", " + num(u) + ", " + num(v) + ", " + num(exx) + ", " +
-           num(eyy) + ", " + num(exy) + ", " + num(ok ? sigma : -1.0) + "\n";
+      append_row(t, {x, y, u, v, exx, eyy, exy, ok ? sigma : -1.0}, ", ");
       break;
     case DicLayout::dice:
-      t += std::to_string(k) + "," + num(x) + "," + num(y) + "," + num(u) + "," + num(v) + "," +
-           num(ok ? sigma : -1.0) + "," + num(exx) + "," + num(eyy) + "," + num(exy) + "\n";
+      t += std::to_string(k) + ",";
+      append_row(t, {x, y, u, v, ok ? sigma : -1.0, exx, eyy, exy}, ",");
       break;
     case DicLayout::gom: {
       if (!ok) // a facet that did not correlate is not in the nodemap
@@ -247,9 +263,8 @@ void write_dic_frame(const std::string& path, const VirtualDicSettings& s, const
       // Von Mises equivalent of an in-plane, volume-preserving strain state.
       const double eqv =
           2 / std::sqrt(3.0) * std::sqrt(exx * exx + eyy * eyy + exx * eyy + exy * exy);
-      t += std::to_string(k + 1) + "; " + num(x) + "; " + num(y) + "; 0; " + num(u) + "; " +
-           num(v) + "; 0; " + num(100 * exx) + "; " + num(100 * eyy) + "; " + num(exy) + "; " +
-           num(100 * eqv) + "\n";
+      t += std::to_string(k + 1) + "; ";
+      append_row(t, {x, y, 0.0, u, v, 0.0, 100 * exx, 100 * eyy, exy, 100 * eqv}, "; ");
       break;
     }
     }
