@@ -288,9 +288,29 @@ TEST(FemVirtualDic, DicePixelsYDownNoiseAndFailures) {
   EXPECT_NEAR(share, 0.1, 5 * std::sqrt(0.09 / double(n_on)));
 }
 
-TEST(FemVirtualDic, RefusesThreeDimensions) {
+namespace {
+/// The InputError message of prm.validate(), or "" when it passes.
+std::string validation_error(const fem::FemParameters& prm) {
+  try {
+    prm.validate();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+} // namespace
+
+TEST(FemVirtualDic, RefusesSettingsItCannotHonour) {
   fem::FemParameters prm;
-  prm.mesh.dimension = 3;
   prm.virtual_dic.settings.enabled = true;
-  EXPECT_THROW(prm.validate(), InputError);
+  EXPECT_EQ(validation_error(prm), "");
+  prm.mesh.dimension = 3; // the sampler is 2D
+  EXPECT_NE(validation_error(prm).find("FEM/Virtual DIC/Enabled"), std::string::npos);
+  prm.mesh.dimension = 2;
+  prm.virtual_dic.settings.strain_window = 1.5 * prm.virtual_dic.settings.spacing;
+  EXPECT_NE(validation_error(prm).find("FEM/Virtual DIC/Strain window"), std::string::npos);
+  prm.virtual_dic.settings.strain_window = 5 * mm;
+  prm.virtual_dic.settings.layout = result::DicLayout::gom; // nodemaps are in mm
+  prm.virtual_dic.settings.pixels = true;
+  EXPECT_NE(validation_error(prm).find("FEM/Virtual DIC/Coordinates"), std::string::npos);
 }
