@@ -11,6 +11,7 @@
 #include "equilibrium_problem.h"
 #include "field_output.h"
 #include "jacobian_solver.h"
+#include "virtual_dic.h"
 
 #include "fiberbridge/fem/dcb_common.h"
 #include "fiberbridge/fem/distributed_dcb.h"
@@ -208,6 +209,8 @@ private:
   FemRunDetails details_;
   unsigned n_trials_ = 0, n_unstable_ = 0;
   FieldOutput<dim> output_;
+  /// FEM/Virtual DIC: samples every recorded state, writes the virtual test at the end.
+  std::unique_ptr<VirtualTestRecorder<dim>> virtual_test_;
 };
 
 } // namespace fiberbridge::fem::distributed

@@ -990,6 +990,14 @@ result::SimulationResult DcbModel<dim>::run() {
     solver_ = make_jacobian_solver(prm_, *this, 12 * crack_.n_z(), std::move(modes), timer_);
   }
   make_constraints(0.0, hom_);
+  if (prm_.virtual_dic.settings.enabled) {
+    if (output_dir_.empty())
+      throw InputError("FEM/Virtual DIC/Enabled: the virtual test writes into the output "
+                       "directory; the run has none");
+    const TimerOutput::Scope timed(timer_, "output");
+    virtual_test_ = std::make_unique<VirtualTestRecorder<dim>>(
+        prm_.virtual_dic.settings, specimen_, material_, dof_handler_, mapping_, comm_);
+  }
   result_.n_dofs_or_particles = long(dof_handler_.n_dofs());
   info_.n_ranks = n_ranks_;
   info_.dimension = dim;
@@ -1031,6 +1039,10 @@ result::SimulationResult DcbModel<dim>::run() {
     result::check_rcurve_point(
         pt); // NaN/Inf ends the run naming the column (the same on every rank)
     result_.rcurve.push_back(pt);
+    if (virtual_test_) {
+      const TimerOutput::Scope timed(timer_, "output");
+      virtual_test_->record(u_ghost_, pt.load_point_opening, pt.load, pt.root, pt.a);
+    }
     if (first_root_move < 0 && pt.root > a0 + 1e-9 * L)
       first_root_move = pt.a;
     if (advance % 10 == 0)
@@ -1054,6 +1066,14 @@ result::SimulationResult DcbModel<dim>::run() {
   note_snap_back();
   output_fields(advance + 1);
   write_interface_csv(output_dir_, comm_, dim, crack_.interface(), openings(), crack_.point_z());
+  if (virtual_test_) {
+    const TimerOutput::Scope timed(timer_, "output");
+    const auto files = virtual_test_->write(output_dir_);
+    result_.notes.push_back("virtual test (FEM/Virtual DIC): " + std::to_string(files.n_frames) +
+                            " frames of " + std::to_string(files.n_points) + " points over " +
+                            fmt(files.duration, 4) + " s in " + files.directory +
+                            "; run its scene " + files.scene);
+  }
   summarize(start);
   return result_;
 }

@@ -299,6 +299,9 @@ void FemParameters::declare_parameters(dealii::ParameterHandler& prm) {
   JDomain::declare_parameters(prm);
   SteadyState::declare_parameters(prm);
   Output::declare_parameters(prm);
+  prm.enter_subsection("Virtual DIC");
+  VirtualDic::declare_parameters(prm);
+  prm.leave_subsection();
 }
 
 void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
@@ -312,6 +315,9 @@ void FemParameters::parse_parameters(dealii::ParameterHandler& prm) {
   j_domain.parse_parameters(prm);
   steady_state.parse_parameters(prm, deprecation_notes);
   output.parse_parameters(prm);
+  prm.enter_subsection("Virtual DIC");
+  virtual_dic.parse_parameters(prm);
+  prm.leave_subsection();
   validate();
 }
 
@@ -323,6 +329,9 @@ void FemParameters::validate() const {
   linear.validate();
   j_domain.validate();
   steady_state.validate();
+  virtual_dic.validate();
+  require(!virtual_dic.settings.enabled || mesh.dimension == 2, "Virtual DIC/Enabled",
+          "the virtual test samples the 2D model only; set FEM/Dimension = 2");
 }
 
 } // namespace fiberbridge::fem

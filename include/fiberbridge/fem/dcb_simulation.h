@@ -10,6 +10,7 @@
 // rigid-body rotation and translation; it carries no load under symmetric opening.
 #include "fiberbridge/law/traction_law.h"
 #include "fiberbridge/result/rcurve.h"
+#include "fiberbridge/result/virtual_dic.h"
 #include "fiberbridge/specimen/specimen.h"
 
 #include <functional>
@@ -157,6 +158,16 @@ struct FemParameters {
     void parse_parameters(dealii::ParameterHandler& prm);
   };
 
+  /// The virtual test (subsection FEM/Virtual DIC; result/virtual_dic.h): the frames a DIC
+  /// system and the record a testing machine would write for this run (2D, one rank).
+  struct VirtualDic {
+    result::VirtualDicSettings settings;
+
+    static void declare_parameters(dealii::ParameterHandler& prm);
+    void parse_parameters(dealii::ParameterHandler& prm);
+    void validate() const { settings.validate("FEM/Virtual DIC"); }
+  };
+
   Mesh mesh;
   Elasticity3d elasticity_3d;
   Interface interface;
@@ -165,6 +176,7 @@ struct FemParameters {
   JDomain j_domain;
   SteadyState steady_state;
   Output output;
+  VirtualDic virtual_dic;
 
   /// Notes for the run on deprecated keys met by parse_parameters (FEM/Engine, umfpack).
   std::vector<std::string> deprecation_notes;
