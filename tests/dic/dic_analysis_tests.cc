@@ -310,3 +310,48 @@ TEST(DicRecord, FramesMatchedToTheMachineRecordByTime) {
   const DicAnalysis late = analyse_frames(order_frames(paths, "test"), o);
   EXPECT_THROW(match_to_machine(late, rec, 0.1, notes), InputError);
 }
+
+// How the rule's tip relates to the cohesive model's tip (the front of the bridging zone) and how
+// that depends on the threshold and the strain window: the lag s_m - s_rule, measured on one
+// noise-free frame per case, printed as the table docs/dic_tip_rule.md quotes. The physics it
+// checks: the rule's tip sits where the opening is about (threshold - elastic strain) x the
+// window's effective height, so the lag grows with both; with delta = lambda A d^2 behind the
+// model tip, d = sqrt(opening / (lambda A)).
+TEST(DicTip, RuleTipLagsTheModelTipByThresholdTimesWindow) {
+  const double s_m = 25e-3, lambda = 1;
+  FrameGeometry g;
+  std::printf("threshold  window_points  window_mm  lag_mm  opening_at_rule_tip_um\n");
+  double previous_lag_by_window[3] = {0, 0, 0};
+  int t = 0;
+  for (const double thr : {0.005, 0.01, 0.02}) {
+    double previous = 0;
+    int w = 0;
+    for (const int k : {2, 4, 7}) {
+      SyntheticDcb d;
+      d.window = k;
+      DicOptions o;
+      o.geometry = g;
+      o.tip.threshold = thr;
+      const fs::path dir = fresh_dir("lag_" + std::to_string(t) + "_" + std::to_string(k));
+      const std::string p = (dir / "f_1.csv").string();
+      test::write_frame(p, d.frame(s_m, lambda, 1), g, Out::plain);
+      const DicAnalysis a = analyse_frames(order_frames({p}, "test"), o);
+      ASSERT_TRUE(a.frames[0].used);
+      const double lag = s_m - a.frames[0].tip.s;
+      const double opening = d.opening(a.frames[0].tip.s, s_m, lambda);
+      std::printf("%9.3f  %13d  %9.2f  %6.3f  %22.2f\n", thr, 2 * k + 1, (2 * k + 1) * d.h * 1e3,
+                  lag * 1e3, opening * 1e6);
+      EXPECT_GT(lag, previous) << "a wider window lags more";
+      EXPECT_GT(lag, previous_lag_by_window[w]) << "a higher threshold lags more";
+      // The opening at the rule's tip is below threshold x window height (the least-squares slope
+      // of a step over a window of height W is 1.5 delta / W, minus the elastic part) and above
+      // a third of it.
+      const double W = (2 * k + 1) * d.h;
+      EXPECT_LT(opening, thr * W);
+      EXPECT_GT(opening, thr * W / 3);
+      previous = lag;
+      previous_lag_by_window[w++] = lag;
+    }
+    ++t;
+  }
+}
