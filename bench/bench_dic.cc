@@ -2,7 +2,7 @@
 // included): frames of the synthetic DCB (tests/dic/dic_synthetic.h) in VIC's layout (pixels, y
 // down, 1 % failed points) written once to a temporary folder, then analysed as the scene item
 // does (read in parallel, tip rule, extensometer, tracking). Run from a Release build:
-//   build/bench/bench_dic --benchmark_min_time=1x
+//   build/bench/bench_dic --benchmark_min_time=0.01
 #include "../tests/dic/dic_synthetic.h"
 #include "fiberbridge/dic/dic_analysis.h"
 
