@@ -307,6 +307,13 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
         for (std::size_t i = 0; i < header.size() && index[col] < 0; ++i)
           if (by_stem ? stem_of(header[i]) == want : header[i] == want)
             index[col] = static_cast<int>(i);
+        // A unit after the name ("X [mm]", "eyy [1]", as some VIC versions write): the name
+        // before it, case kept (VIC's x is pixels, X millimetres).
+        for (std::size_t i = 0; i < header.size() && index[col] < 0; ++i)
+          if (!by_stem && mapped == options.columns.file_header.end() &&
+              header[i].find('[') != std::string::npos &&
+              trim(std::string_view(header[i]).substr(0, header[i].find('['))) == want)
+            index[col] = static_cast<int>(i);
         if (index[col] >= 0)
           break;
       }

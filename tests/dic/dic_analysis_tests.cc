@@ -355,3 +355,27 @@ TEST(DicTip, RuleTipLagsTheModelTipByThresholdTimesWindow) {
     ++t;
   }
 }
+
+// Frames are read and analysed in parallel; the tracking is sequential: one or two threads give the
+// same readings, bit for bit.
+TEST(DicTip, ThreadsDoNotChangeTheReadings) {
+  SyntheticDcb dcb;
+  dcb.noise_v = 1e-6;
+  dcb.fail_fraction = 0.02;
+  const History hist;
+  FrameGeometry g;
+  const fs::path dir = fresh_dir("threads");
+  const auto paths =
+      write_history(dir, dcb, hist, g, Case{Out::plain, false, false, 1, "f_%d.csv"});
+  DicOptions o;
+  o.geometry = g;
+  o.threads = 1;
+  const DicAnalysis one = analyse_frames(order_frames(paths, "test"), o);
+  o.threads = 2;
+  const DicAnalysis two = analyse_frames(order_frames(paths, "test"), o);
+  ASSERT_EQ(one.frames.size(), two.frames.size());
+  for (std::size_t k = 0; k < one.frames.size(); ++k) {
+    EXPECT_EQ(one.frames[k].s_tip, two.frames[k].s_tip) << k;
+    EXPECT_EQ(one.frames[k].extensometer.opening, two.frames[k].extensometer.opening) << k;
+  }
+}

@@ -55,6 +55,20 @@ TEST(DicFrameReader, VicInMillimetresNeedsTheMetricColumns) {
   EXPECT_NE(e.find("Coordinates = px"), std::string::npos) << e;
 }
 
+TEST(DicFrameReader, VicHeadersWithUnitsKeepPixelAndMetricApart) {
+  const std::string text =
+      "\"x [pixel]\",\"y [pixel]\",\"X [mm]\",\"Y [mm]\",\"U [mm]\",\"V [mm]\","
+      "\"eyy [1]\",\"sigma [pixel]\"\n10,20,1.5,2.5,0.01,0.02,0.003,0.01\n";
+  const RawFrame mm = parse_frame(text, "vic3d.csv", {});
+  EXPECT_DOUBLE_EQ(mm.x[0], 1.5);
+  EXPECT_DOUBLE_EQ(mm.v[0], 0.02);
+  EXPECT_DOUBLE_EQ(mm.eyy[0], 0.003);
+  EXPECT_EQ(mm.used.at("x"), "X [mm]");
+  // In pixels the pixel columns are read, and the displacements in pixels are missing here.
+  const std::string e = error_of(text, px());
+  EXPECT_NE(e.find("missing column 'u'"), std::string::npos) << e;
+}
+
 TEST(DicFrameReader, DiceCommentBlockCommaDelimitedAndSigmaMinusOne) {
   const RawFrame f = read_frame(data("dice_solution_3.txt"), px());
   EXPECT_EQ(f.layout, Layout::dice);
