@@ -117,14 +117,16 @@ std::vector<std::string> preset(Layout layout, int col, bool pixels) {
   switch (layout) {
   case Layout::vic:
     switch (col) {
+    // VIC writes image columns x, y, u, v (pixels) and, when calibrated, metric X, Y, U, V:
+    // the pair the scene's Coordinates names comes first, the other is taken as stated.
     case cx:
-      return {pixels ? "x" : "X"};
+      return pixels ? std::vector<std::string>{"x", "X"} : std::vector<std::string>{"X", "x"};
     case cy:
-      return {pixels ? "y" : "Y"};
+      return pixels ? std::vector<std::string>{"y", "Y"} : std::vector<std::string>{"Y", "y"};
     case cu:
-      return {pixels ? "u" : "U"};
+      return pixels ? std::vector<std::string>{"u", "U"} : std::vector<std::string>{"U", "u"};
     case cv:
-      return {pixels ? "v" : "V"};
+      return pixels ? std::vector<std::string>{"v", "V"} : std::vector<std::string>{"V", "v"};
     case ceyy:
       return {"eyy"};
     case cvalid:
@@ -152,15 +154,15 @@ std::vector<std::string> preset(Layout layout, int col, bool pixels) {
   case Layout::gom:
     switch (col) {
     case cx:
-      return {"x_undef", "x"};
+      return {"x_undef", "x", "x0"};
     case cy:
-      return {"y_undef", "y"};
+      return {"y_undef", "y", "y0"};
     case cu:
-      return {"u", "dx", "displacement_x"};
+      return {"u", "dx", "disp_x", "displacement_x"};
     case cv:
-      return {"v", "dy", "displacement_y"};
+      return {"v", "dy", "disp_y", "displacement_y"};
     case ceyy:
-      return {"epsy", "eps_y", "epsilon_y", "eyy"};
+      return {"epsy", "eps_y", "epsilon_y", "eps_yy", "epsilon_yy", "eyy"};
     default:
       return {};
     }
@@ -323,9 +325,6 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
         for (const auto& h : header)
           have += (have.empty() ? "" : ", ") + h;
         std::string hint;
-        if (layout == Layout::vic && !options.pixel_coordinates && col <= cv)
-          hint = " (VIC's x, y, u, v are pixels: with Coordinates = px they are read, with mm "
-                 "the metric X, Y, U, V are needed)";
         throw InputError(where(source, at) + ": missing column '" +
                          (candidates.empty() ? std::string(our_names[col]) : candidates.front()) +
                          "' for " + our_names[col] + " (" + layout_name(layout) +

@@ -47,12 +47,17 @@ TEST(DicFrameReader, VicQuotedHeaderBlankLineBetweenAoisAndNegativeSigma) {
   EXPECT_EQ(f.used.at("valid"), "sigma");
 }
 
-TEST(DicFrameReader, VicInMillimetresNeedsTheMetricColumns) {
-  // x, y of a VIC export are pixels: with Coordinates = mm the reader refuses them and says how.
-  const std::string e =
-      error_of("\"x\", \"y\", \"u\", \"v\", \"eyy\", \"sigma\"\n1, 2, 0, 0, 0, 0\n");
-  EXPECT_NE(e.find("frame.csv:1: missing column 'X'"), std::string::npos) << e;
-  EXPECT_NE(e.find("Coordinates = px"), std::string::npos) << e;
+TEST(DicFrameReader, VicCoordinatesAsTheSceneStatesThem) {
+  // Lower-case x, y, u, v with Coordinates = mm: read as millimetres, as stated.
+  const RawFrame f = parse_frame(
+      "\"x\", \"y\", \"u\", \"v\", \"eyy\", \"sigma\"\n1, 2, 0.1, 0.2, 0.01, 0\n", "vic.csv", {});
+  EXPECT_EQ(f.used.at("x"), "x");
+  EXPECT_DOUBLE_EQ(f.v[0], 0.2);
+  // Both pairs: Coordinates picks the pair (px: x, y, u, v; mm: X, Y, U, V).
+  const std::string both = "\"x\",\"y\",\"u\",\"v\",\"X\",\"Y\",\"U\",\"V\",\"eyy\",\"sigma\"\n"
+                           "100,200,4,6,5,10,0.2,0.3,0.01,0\n";
+  EXPECT_DOUBLE_EQ(parse_frame(both, "vic.csv", {}).x[0], 5);
+  EXPECT_DOUBLE_EQ(parse_frame(both, "vic.csv", px()).x[0], 100);
 }
 
 TEST(DicFrameReader, VicHeadersWithUnitsKeepPixelAndMetricApart) {
@@ -64,9 +69,9 @@ TEST(DicFrameReader, VicHeadersWithUnitsKeepPixelAndMetricApart) {
   EXPECT_DOUBLE_EQ(mm.v[0], 0.02);
   EXPECT_DOUBLE_EQ(mm.eyy[0], 0.003);
   EXPECT_EQ(mm.used.at("x"), "X [mm]");
-  // In pixels the pixel columns are read, and the displacements in pixels are missing here.
-  const std::string e = error_of(text, px());
-  EXPECT_NE(e.find("missing column 'u'"), std::string::npos) << e;
+  // In pixels the pixel columns come first; the displacements only exist in mm here, and are
+  // taken as the scene states its units.
+  EXPECT_DOUBLE_EQ(parse_frame(text, "vic3d.csv", px()).x[0], 10);
 }
 
 TEST(DicFrameReader, DiceCommentBlockCommaDelimitedAndSigmaMinusOne) {

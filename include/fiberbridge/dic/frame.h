@@ -44,8 +44,9 @@ struct FrameColumnMap {
 struct FrameReadOptions {
   Layout layout = Layout::automatic;
   FrameColumnMap columns;
-  /// The scene's Coordinates = px: VIC's pixel columns (x, y, u, v) are read; with mm, VIC's
-  /// metric X, Y, U, V (and an export without them is refused: its x, y are pixels).
+  /// The scene's Coordinates = px: VIC's pixel columns (x, y, u, v) are read first; with mm,
+  /// VIC's metric X, Y, U, V first. An export with only the other pair is read in the units the
+  /// scene states.
   bool pixel_coordinates = false;
 };
 
