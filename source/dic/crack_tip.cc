@@ -94,9 +94,13 @@ TipReading locate_tip(const PlaneProfile& p, const TipRule& rule, double h) {
     r.note = "no point on the crack plane ahead of the notch root";
     return r;
   }
-  const auto open = [&](std::size_t j) { return !(p.eyy[j] < rule.threshold); };
   long last_open = -1;
   int dips = 0;
+  // A failed station (NaN) extends the open run only straight after an open one: correlation is
+  // lost where the crack has opened, not ahead of a station already below the threshold.
+  const auto open = [&](std::size_t j) {
+    return p.eyy[j] >= rule.threshold || (std::isnan(p.eyy[j]) && dips == 0);
+  };
   for (std::size_t j = i0; j < n; ++j) {
     if (open(j)) {
       last_open = static_cast<long>(j);
