@@ -10,9 +10,12 @@
 namespace fiberbridge::dic {
 
 PlaneProfile crack_plane_profile(const PlaneFrame& f, double h) {
+  // Rows of a grid sit at whole and half spacings from the plane; the estimated spacing and the
+  // coordinates carry rounding, so the limits get a thousandth of a spacing of slack.
+  const double slack = 1e-3 * h;
   std::vector<std::size_t> near;
   for (std::size_t i = 0; i < f.s.size(); ++i)
-    if (std::isfinite(f.s[i]) && std::isfinite(f.n[i]) && std::abs(f.n[i]) <= 1.5 * h)
+    if (std::isfinite(f.s[i]) && std::isfinite(f.n[i]) && std::abs(f.n[i]) <= 1.5 * h + slack)
       near.push_back(i);
   std::sort(near.begin(), near.end(),
             [&](std::size_t a, std::size_t b) { return f.s[a] < f.s[b]; });
@@ -39,9 +42,9 @@ PlaneProfile crack_plane_profile(const PlaneFrame& f, double h) {
     if (above >= 0 && below >= 0) {
       const double w = (0 - f.n[below]) / (f.n[above] - f.n[below]);
       e_plane = f.eyy[below] + w * (f.eyy[above] - f.eyy[below]);
-    } else if (above >= 0 && f.n[above] <= 0.5 * h) {
+    } else if (above >= 0 && f.n[above] <= 0.5 * h + slack) {
       e_plane = f.eyy[above];
-    } else if (below >= 0 && -f.n[below] <= 0.5 * h) {
+    } else if (below >= 0 && -f.n[below] <= 0.5 * h + slack) {
       e_plane = f.eyy[below];
     }
     p.s.push_back(s_sum / static_cast<double>(e - b));
