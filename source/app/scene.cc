@@ -26,6 +26,7 @@ const std::vector<SceneItem>& scene_items() {
   // (models.h, cheapest first), then the items that compare them.
   static const std::vector<SceneItem> items = [] {
     std::vector<SceneItem> v = {
+        {"dic", &declare_dic_section, &check_dic_item, &run_dic_item},
         {"reduce", &declare_test_section, &check_reduce_item, &run_reduce_item},
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
         {"identify", &declare_identify_section, &check_identify_item, &run_identify_item},
@@ -52,7 +53,7 @@ namespace {
 
 /// Every item a scene may list, built or not.
 const std::string all_item_names =
-    "reduce, identify, extract, fit, rank, bridging, campaign, " + model_names() + ", compare, study";
+    "dic, reduce, identify, extract, fit, rank, bridging, campaign, " + model_names() + ", compare, study";
 
 void declare_everything(dealii::ParameterHandler& prm) {
   prm.declare_entry("Output directory", "output", dealii::Patterns::Anything(),

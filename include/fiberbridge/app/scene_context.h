@@ -91,6 +91,9 @@ struct SceneContext {
   std::optional<CrackLaw> handed_law;
   /// The specimen set-up when `identify` ran; else the Specimen and Material sections.
   std::optional<SpecimenSetup> handed_specimen;
+  /// The test records `dic` wrote (dic_record.csv) when the scene runs it: `reduce` reads these
+  /// instead of Test/Files, which then names the machine record `dic` read (item_dic.cc).
+  std::vector<std::string> records_from_dic;
   /// Results of the simulations that ran, by model name (models.h), for compare.
   std::map<std::string, result::SimulationResult> results;
 
