@@ -293,6 +293,11 @@ int cmd_reduce(const std::vector<std::string>& args) {
   const std::string crack = vm["crack-length"].as<std::string>();
   if (crack != "auto" && crack != "measured" && crack != "equivalent")
     throw InputError("--crack-length: expected auto, measured or equivalent, got '" + crack + "'");
+  // The reader and the reduction take the same choice: `measured` makes a missing a_mm column an
+  // error, `equivalent` reduces against the compliance's equivalent crack even with readings.
+  o.read.crack_length = crack == "measured"     ? analysis::CrackLengthSource::measured
+                        : crack == "equivalent" ? analysis::CrackLengthSource::equivalent
+                                                : analysis::CrackLengthSource::automatic;
   o.reduce.use_equivalent_crack = crack == "equivalent";
   auto opt = [&](const char* key, double unit) {
     return vm.count(key) ? vm[key].as<double>() * unit : NAN;

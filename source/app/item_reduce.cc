@@ -44,13 +44,14 @@ ReduceStepOptions reduce_options(SceneContext& ctx) {
   o.specimen.pin_to_arm_midplane = t.pin_to_arm_midplane > 0 ? t.pin_to_arm_midplane : NAN;
   o.specimen.pin_to_block_edge = t.pin_to_block_edge > 0 ? t.pin_to_block_edge : NAN;
   // CBBM (equivalent crack, docs/design.md section 6): the arms' G13 and E22 from the Material
-  // section. A record without crack readings is reduced against the equivalent crack whatever
-  // o.reduce.use_equivalent_crack says; the lead wires Test/Crack length into that flag.
+  // section. A record without crack readings is reduced against the equivalent crack;
+  // Test/Crack length = equivalent asks for it with readings too (test_section.h).
   const specimen::Material m = ctx.material();
   o.reduce.shear_modulus = m.G_LT;
   o.reduce.transverse_modulus = m.E_T;
   // Without crack readings a0 comes from the Specimen.
   o.reduce.initial_crack_without_readings = s.initial_crack;
+  o.reduce.use_equivalent_crack = t.crack_length == "equivalent";
   return o;
 }
 
