@@ -2,6 +2,7 @@
 #include "fiberbridge/app/campaign_simulation.h"
 
 #include "fiberbridge/app/items.h"
+#include "fiberbridge/app/models.h"
 #include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
@@ -44,15 +45,11 @@ double interpolate(const std::vector<double>& x, const std::vector<double>& y, d
 
 result::SimulationResult run_model(SceneContext& ctx, const std::string& model,
                                    const law::TractionLaw& law, double j_tip) {
-#ifdef FIBERBRIDGE_HAVE_BEAM
-  if (model == "beam")
-    return beam::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip,
-                              read_beam_section(*ctx.prm));
-#endif
-  (void)ctx;
-  (void)law;
-  (void)j_tip;
-  throw InputError("Campaign/Simulation model: '" + model + "' is not available in this build");
+  // One place chooses a model by name: the registry (models.h).
+  const SimulationModel* m = built_model(model);
+  if (!m || !m->simulate)
+    throw InputError("Campaign/Simulation model: '" + model + "' is not available in this build");
+  return m->simulate(ctx, law, j_tip);
 }
 
 GroupSimulation simulate_group(SceneContext& ctx, const analysis::CampaignGroup& g,
@@ -148,11 +145,14 @@ void decode(const std::string& t, GroupSimulation& s) {
 } // namespace
 
 std::vector<std::string> campaign_simulation_models() {
-#ifdef FIBERBRIDGE_HAVE_BEAM
-  return {"beam"};
-#else
-  return {};
-#endif
+  // The FEM first (the paper's Fig. 10 puts the laws back in a FE model; issue 33 item 5), then
+  // the others cheapest first.
+  std::vector<std::string> names;
+  for (const SimulationModel* m : built_models())
+    if (m->simulate)
+      names.push_back(m->name);
+  std::stable_partition(names.begin(), names.end(), [](const std::string& n) { return n == "fem"; });
+  return names;
 }
 
 std::vector<GroupSimulation> simulate_campaign_laws(SceneContext& ctx,

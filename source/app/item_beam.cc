@@ -112,6 +112,12 @@ void check_beam_item(SceneContext& ctx) {
     beam::check_dcb_inputs(ctx.specimen(), ctx.material(), params);
 }
 
+result::SimulationResult simulate_beam_law(SceneContext& ctx, const law::TractionLaw& law,
+                                           double j_tip) {
+  return beam::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip,
+                            read_beam_section(*ctx.prm));
+}
+
 void run_beam_item(SceneContext& ctx) {
   const beam::BeamParameters params = read_beam_section(*ctx.prm);
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };

@@ -77,8 +77,8 @@ struct CampaignSection {
                       "simulated R(delta_root) against the group's measured curves, misfit per "
                       "group. Uses the Specimen, Material and the model's section.");
     prm.declare_entry("Simulation model", "auto", dealii::Patterns::Anything(),
-                      "Model for Simulate laws: auto (the first of this build's models that can: "
-                      "beam) or a model's name (beam).");
+                      "Model for Simulate laws: auto (the FEM when built, else the cheapest built "
+                      "model) or a model's name (fem, beam, mpm), run with its own section.");
   }
   void parse_parameters(dealii::ParameterHandler& prm) {
     manifest = prm.get("Manifest");

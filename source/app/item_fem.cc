@@ -53,6 +53,15 @@ void check_fem_item(SceneContext& ctx) {
     fem::check_dcb_inputs(ctx.specimen(), ctx.material(), params);
 }
 
+result::SimulationResult simulate_fem_law(SceneContext& ctx, const law::TractionLaw& law,
+                                          double j_tip) {
+  auto params = fem_parameters(ctx);
+  // No files: a virtual DIC test writes only for the scene's own FEM run.
+  params.virtual_dic.settings.enabled = false;
+  return fem::simulate_dcb_distributed(ctx.specimen(), ctx.material(), law, j_tip, params, "", {},
+                                       MPI_COMM_SELF);
+}
+
 void run_fem_item(SceneContext& ctx) {
   const auto params = fem_parameters(ctx);
   const MPI_Comm comm = simulation_communicator();

@@ -165,6 +165,13 @@ void check_mpm_item(SceneContext& ctx) {
     mpm::check_dcb_inputs(ctx.specimen(), ctx.material(), params, law);
 }
 
+result::SimulationResult simulate_mpm_law(SceneContext& ctx, const law::TractionLaw& law,
+                                          double j_tip) {
+  mpm::MpmParameters params = read_mpm_section(*ctx.prm);
+  params.resume = false;
+  return mpm::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip, params, "", {});
+}
+
 void run_mpm_item(SceneContext& ctx) {
   mpm::MpmParameters params = read_mpm_section(*ctx.prm);
   params.resume = ctx.resume;

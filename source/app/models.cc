@@ -31,14 +31,24 @@ const std::vector<SimulationModel>& simulation_models() {
 #else
        false, nullptr, nullptr, nullptr, 10.0, true, nullptr,
 #endif
-       "", "As Beam ladder, keys of the FEM section.", "Target error"},
+       "", "As Beam ladder, keys of the FEM section.", "Target error",
+#ifdef FIBERBRIDGE_HAVE_FEM
+       &simulate_fem_law},
+#else
+       nullptr},
+#endif
       {"mpm", "MPM",
 #ifdef FIBERBRIDGE_HAVE_MPM
        true, &declare_mpm_section, &check_mpm_item, &run_mpm_item,
 #else
        false, nullptr, nullptr, nullptr,
 #endif
-       100.0, false, nullptr, "", "As Beam ladder, keys of the MPM section.", "MPM target error"},
+       100.0, false, nullptr, "", "As Beam ladder, keys of the MPM section.", "MPM target error",
+#ifdef FIBERBRIDGE_HAVE_MPM
+       &simulate_mpm_law},
+#else
+       nullptr},
+#endif
       {"beam", "Beam",
 #ifdef FIBERBRIDGE_HAVE_BEAM
        true, &declare_beam_section, &check_beam_item, &run_beam_item,
@@ -48,7 +58,12 @@ const std::vector<SimulationModel>& simulation_models() {
        1.0, false, nullptr, "Number of elements = 50, 100, 200, 400",
        "'Key = v1, v2, ...' (keys of the Beam section; several keys separated by ';' vary "
        "together).",
-       "Target error"},
+       "Target error",
+#ifdef FIBERBRIDGE_HAVE_BEAM
+       &simulate_beam_law},
+#else
+       nullptr},
+#endif
   };
   return models;
 }

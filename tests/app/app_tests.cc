@@ -363,11 +363,39 @@ TEST(BadInput, RecordCrackLengthGoingBack) {
   expect_bad_record("crack_back.csv", "crack_back.csv:22: a_mm = 33 is 3 mm shorter");
 }
 TEST(BadInput, RecordMissingColumn) {
-  expect_bad_record("missing_column.csv", "missing_column.csv:1: missing column 'Crack length "
-                                          "(mm)' for a_mm");
+  // The map names a crack column the file does not have: an error naming it and the headers
+  // found (a record without any crack column is read against the equivalent crack, issue 31).
+  expect_bad_record("missing_column.csv", "missing_column.csv:1: no column 'Crack length (mm)' "
+                                          "for a_mm (headers found: 'Time (s)'");
 }
-TEST(BadInput, RecordNaN) {
-  expect_bad_record("nan_opening.csv", "nan_opening.csv:8: column 'Extension (mm)'");
+TEST(BadInput, RecordNotANumber) {
+  // A cell that is not a number is refused at its line; a NaN cell is a dropout (below).
+  const fs::path dir = work("reduce_abc_opening_input"); // run() empties its own directory
+  fs::create_directories(dir);
+  std::ifstream in(record("nan_opening.csv"));
+  std::ofstream out(dir / "abc_opening.csv");
+  for (std::string line; std::getline(in, line);)
+    out << (line.rfind("6,nan,", 0) == 0 ? "6,abc," + line.substr(6) : line) << "\n";
+  out.close();
+  expect_clean_failure("reduce_abc_opening",
+                       "reduce " + (dir / "abc_opening.csv").string() +
+                           " --width 25 --arm-thickness 2.7" + record_map + " --out out",
+                       "abc_opening.csv:8: column 'Extension (mm)' holds 'abc', expected a number");
+}
+TEST(AppReduce, NanOpeningRowIsADropoutNamedInTheCleaning) {
+  // A NaN load or opening is a channel dropout (issue 31 item 2): the row is dropped and the
+  // cleaning report says so with its line; the record still reduces.
+  const auto r = run("reduce_nan_opening", "reduce " + record("nan_opening.csv") +
+                                               " --width 25 --arm-thickness 2.7" + record_map +
+                                               " --out out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = read_json(work("reduce_nan_opening") / "out" / "summary.json");
+  bool named = false;
+  for (const auto& c : j["reduce"]["records"][0]["cleaning"])
+    named = named || (c.get<std::string>().find("1 row(s) with an empty or NaN") !=
+                          std::string::npos &&
+                      c.get<std::string>().find("line 8") != std::string::npos);
+  EXPECT_TRUE(named) << j["reduce"]["records"][0]["cleaning"].dump();
 }
 TEST(BadInput, RecordNoCrackGrowth) {
   expect_bad_record("no_growth.csv", "no_growth.csv:13: record 'no_growth': the crack length "

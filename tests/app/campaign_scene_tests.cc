@@ -86,7 +86,8 @@ TEST(CampaignScene, LawsBackInTheSpecimenWithTheBeam) {
   const auto r = run("campaign_fig10", "run " + source("prm/campaign_table1.prm") +
                                            " --set \"Output directory=out\""
                                            " --set \"Campaign/Bootstrap samples=20\""
-                                           " --set \"Campaign/Simulate laws=true\"");
+                                           " --set \"Campaign/Simulate laws=true\""
+                                           " --set \"Campaign/Simulation model=beam\"");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto out = work("campaign_fig10") / "out";
   const auto s = read_json(out / "summary.json")["campaign"];

@@ -2,8 +2,8 @@
 // The campaign's laws back in the specimen (issue 33 item 5, the paper's Fig. 10): each group's
 // trilinear law and J_tip simulated on the scene's Specimen and Material by a model chosen by
 // key, the simulated R(delta_root) against the group's measured curve and its scatter, and the
-// misfit. Models wired: beam (when built). The FEM and MPM are left to the model registry of
-// issue 30 (one place where a model is chosen by name).
+// misfit. Any built model with a `simulate` entry in the registry (models.h): the FEM by default
+// (auto), the beam or the MPM by name.
 #include "fiberbridge/analysis/campaign_run.h"
 #include "fiberbridge/app/scene_context.h"
 
@@ -28,7 +28,8 @@ struct GroupSimulation {
   double wall_time_s = NAN;
 };
 
-/// The models this build can put the laws back into ("beam" when built); empty: none.
+/// The models this build can put the laws back into, the FEM first (auto takes the first);
+/// empty: none.
 std::vector<std::string> campaign_simulation_models();
 
 /// Every group with a law, simulated by `model` on ctx's Specimen and Material (and the model's

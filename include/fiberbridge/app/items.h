@@ -61,11 +61,18 @@ void declare_beam_section(dealii::ParameterHandler& prm);
 beam::BeamParameters read_beam_section(dealii::ParameterHandler& prm);
 void check_beam_item(SceneContext& ctx);
 void run_beam_item(SceneContext& ctx);
+/// The beam with this law and J_tip on ctx's specimen set-up and Beam section (models.h).
+result::SimulationResult simulate_beam_law(SceneContext& ctx, const law::TractionLaw& law,
+                                           double j_tip);
 #endif
 #ifdef FIBERBRIDGE_HAVE_FEM
 void declare_fem_section(dealii::ParameterHandler& prm);
 void check_fem_item(SceneContext& ctx);
 void run_fem_item(SceneContext& ctx);
+/// The FEM with this law and J_tip on ctx's specimen set-up and FEM section, on this rank alone
+/// (MPI_COMM_SELF), no files (models.h).
+result::SimulationResult simulate_fem_law(SceneContext& ctx, const law::TractionLaw& law,
+                                          double j_tip);
 #endif
 #ifdef FIBERBRIDGE_HAVE_MPM
 void declare_mpm_section(dealii::ParameterHandler& prm);
@@ -73,6 +80,9 @@ void declare_mpm_section(dealii::ParameterHandler& prm);
 mpm::MpmParameters read_mpm_section(dealii::ParameterHandler& prm);
 void check_mpm_item(SceneContext& ctx);
 void run_mpm_item(SceneContext& ctx);
+/// The MPM with this law and J_tip on ctx's specimen set-up and MPM section, no files (models.h).
+result::SimulationResult simulate_mpm_law(SceneContext& ctx, const law::TractionLaw& law,
+                                          double j_tip);
 #endif
 
 } // namespace fiberbridge::app

@@ -32,6 +32,10 @@ struct SimulationModel {
   const char* ladder_doc;
   /// The Study key of the error a ladder level must reach ("Target error").
   const char* target_key;
+  /// The model run with a given law and J_tip on the scene's specimen set-up and the model's
+  /// section, on this process alone, writing no files and reporting nothing: for items that put
+  /// many laws back in the specimen (the campaign's Fig. 10). nullptr when not built.
+  result::SimulationResult (*simulate)(SceneContext&, const law::TractionLaw&, double j_tip);
 
   SceneItem item() const { return {name, declare, check, run}; }
 };
