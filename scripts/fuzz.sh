@@ -12,7 +12,7 @@ seconds="${2:-60}"
 shift $(($# < 2 ? $# : 2))
 targets=("$@")
 [[ ${#targets[@]} -gt 0 ]] || targets=(csv_reader rdelta_reader law_points law_table table1_reader test_record_reader
-  scene_reader)
+  scene_reader dic_frame_reader)
 findings="$build/fuzz/findings"
 mkdir -p "$findings"
 
@@ -41,6 +41,8 @@ for target in "${targets[@]}"; do
       while IFS= read -r p; do
         printf '%s' "$p" >"$build/fuzz/work/$target/corpus/points_$((i++))"
       done < <(grep -h "set Points" "${scenes[@]}" | sed 's/.*Points *= *//' | sort -u) ;;
+    dic_frame_reader) # the frames of each layout (VIC csv, DICe and nodemap txt) and the csvs
+      seed "$target" "$root"/tests/dic/data/* "${csvs[@]}" ;;
     *) seed "$target" "${csvs[@]}" ;;
   esac
   work="$build/fuzz/work/$target"

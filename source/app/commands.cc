@@ -5,6 +5,7 @@
 
 #include "fiberbridge/analysis/synthetic_data.h"
 #include "fiberbridge/app/analysis_steps.h"
+#include "fiberbridge/app/dic_step.h"
 #include "fiberbridge/app/reduce_step.h"
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/core/csv.h"
@@ -39,6 +40,12 @@ Usage:
                                         synthetic replicate data from a law (labelled as such)
   fiberbridge reduce RECORD.csv... --width MM --arm-thickness MM [--columns MAP] [--out DIR]
                                         raw DCB records -> R(a) by direct energy, MBT, CC, MCC
+  fiberbridge dic FRAMES... --record MACHINE.csv [--columns MAP] [--format F] [--coordinates mm|px]
+                  [--pixel-size MM] [--y-axis up|down] [--crack-plane-y Y] [--notch-root-x X]
+                  [--growth-direction +x|-x] [--frame-rate HZ] [--first-frame-time S]
+                  [--threshold E] [--gauge-length MM] [--initial-crack MM] [--out DIR]
+                                        DIC frames -> crack length (1 % strain rule) and
+                                        delta_root (virtual extensometer): dic_record.csv
   fiberbridge parameters                print every scene parameter with its documentation
   fiberbridge COMMAND --help            options of one command
 )";
@@ -280,6 +287,73 @@ int cmd_reduce(const std::vector<std::string>& args) {
   return 0;
 }
 
+/// fiberbridge dic: the scene item's DIC section as options (dic_step.h), its frames as arguments.
+int cmd_dic(const std::vector<std::string>& args) {
+  po::options_description d("fiberbridge dic FRAMES... --record MACHINE.csv [options]");
+  d.add_options()("frames", po::value<std::vector<std::string>>()->required(),
+                  "DIC frame files (ordered by the image number in their names)")(
+      "record", po::value<std::string>()->required(), "the machine record (time, opening, load)")(
+      "columns", po::value<std::string>()->default_value(""),
+      "machine record columns: 'time_s: Time, opening_mm: Extension, load_N: Load'")(
+      "frame-columns", po::value<std::string>()->default_value(""),
+      "frame columns: 'eyy: ..., valid: ...' (x, y, u, v, eyy, valid, time_s)")(
+      "format", po::value<std::string>()->default_value("auto"), "auto|vic|dice|gom|plain")(
+      "coordinates", po::value<std::string>()->default_value("mm"),
+      "mm|px")("pixel-size", po::value<double>()->default_value(0), "mm per pixel (with px)")(
+      "y-axis", po::value<std::string>()->default_value("up"), "up|down")(
+      "crack-plane-y", po::value<double>()->default_value(0), "in the frames' coordinates")(
+      "notch-root-x", po::value<double>()->default_value(0), "in the frames' coordinates")(
+      "growth-direction", po::value<std::string>()->default_value("+x"),
+      "+x|-x")("frame-rate", po::value<double>()->default_value(1), "Hz")(
+      "first-frame-time", po::value<double>()->default_value(0), "s on the machine's clock")(
+      "frame-time-source", po::value<std::string>()->default_value("auto"),
+      "auto|column|name|index")("threshold", po::value<double>()->default_value(0.01),
+                                "crack-normal strain at the tip")(
+      "gauge-length", po::value<double>()->default_value(2), "extensometer, mm")(
+      "initial-crack", po::value<double>()->required(), "a at the notch root, mm")(
+      "out", po::value<std::string>()->default_value("output/dic"), "output directory");
+  po::variables_map vm;
+  if (!parse(args, d, "frames", -1, vm))
+    return 0;
+  const auto choice = [&](const char* key, std::initializer_list<const char*> allowed) {
+    const std::string v = vm[key].as<std::string>();
+    for (const char* a : allowed)
+      if (v == a)
+        return v;
+    throw InputError(std::string("--") + key + ": '" + v + "' is not allowed");
+  };
+  app::DicSection s;
+  s.format = vm["format"].as<std::string>();
+  s.columns = vm["frame-columns"].as<std::string>();
+  s.pixels = choice("coordinates", {"mm", "px"}) == "px";
+  s.pixel_size = vm["pixel-size"].as<double>() * units::mm;
+  s.y_down = choice("y-axis", {"up", "down"}) == "down";
+  s.crack_plane_y = vm["crack-plane-y"].as<double>();
+  s.notch_root_x = vm["notch-root-x"].as<double>();
+  s.growth_sign = choice("growth-direction", {"+x", "-x"}) == "-x" ? -1 : 1;
+  s.frame_rate = vm["frame-rate"].as<double>();
+  s.first_frame_time = vm["first-frame-time"].as<double>();
+  s.frame_time_source = vm["frame-time-source"].as<std::string>();
+  s.threshold = vm["threshold"].as<double>();
+  s.gauge_length = vm["gauge-length"].as<double>() * units::mm;
+  if (s.pixels && !(s.pixel_size > 0))
+    throw InputError("--pixel-size: --coordinates px needs a positive pixel size (mm)");
+  app::DicStepOptions o;
+  o.where = "fiberbridge dic";
+  o.dic = s.options();
+  o.frames = vm["frames"].as<std::vector<std::string>>();
+  o.machine_record = vm["record"].as<std::string>();
+  o.machine_columns = vm["columns"].as<std::string>();
+  o.initial_crack = vm["initial-crack"].as<double>() * units::mm;
+  const std::string out = vm["out"].as<std::string>();
+  Json summary = begin_command_output(out, "dic");
+  const auto r = app::run_dic(o, out, summary);
+  app::write_run_summary(out, summary);
+  std::cout << r.analysis.frames.size() << " frame(s), " << r.analysis.frames_used << " used, "
+            << r.rows.size() << " row(s) in " << r.record_path << "\n";
+  return 0;
+}
+
 } // namespace
 
 int app::run_command_line(std::vector<std::string> args, unsigned rank) {
@@ -303,6 +377,8 @@ int app::run_command_line(std::vector<std::string> args, unsigned rank) {
       return cmd_synth(args);
     if (cmd == "reduce")
       return cmd_reduce(args);
+    if (cmd == "dic")
+      return cmd_dic(args);
     if (cmd == "parameters") {
       app::print_scene_parameters(std::cout);
       return 0;

@@ -29,6 +29,12 @@ ReduceStepOptions reduce_options(SceneContext& ctx) {
   if (o.files.empty())
     throw InputError(ctx.scene_file + ": Test/Files lists no record; give one or more CSV files");
   o.read = t.read_options(ctx.scene_file);
+  // With `dic` in the scene, Test/Files is the machine record dic read; reduce reads the record
+  // dic wrote from it (dic_record.csv, our column names) once dic has run (item_dic.cc).
+  if (!ctx.records_from_dic.empty()) {
+    o.files = ctx.records_from_dic;
+    o.read.columns = {};
+  }
   o.reduce.large_displacement_correction = t.large_displacement_correction;
   o.reduce.plateau_fraction = t.plateau_fraction;
   if (t.use_specimen_initial_crack)

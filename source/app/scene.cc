@@ -23,6 +23,7 @@ const std::vector<SceneItem>& scene_items() {
   // Order = execution order: analysis first (fit hands its law on), then simulations, then the
   // items that compare them.
   static const std::vector<SceneItem> items = {
+      {"dic", &declare_dic_section, &check_dic_item, &run_dic_item},
       {"reduce", &declare_test_section, &check_reduce_item, &run_reduce_item},
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
       {"identify", &declare_identify_section, &check_identify_item, &run_identify_item},
@@ -49,7 +50,7 @@ const std::vector<SceneItem>& scene_items() {
 namespace {
 
 const char* all_item_names =
-    "reduce, identify, extract, fit, rank, bridging, fem, mpm, beam, compare, study";
+    "dic, reduce, identify, extract, fit, rank, bridging, fem, mpm, beam, compare, study";
 
 void declare_everything(dealii::ParameterHandler& prm) {
   prm.declare_entry("Output directory", "output", dealii::Patterns::Anything(),

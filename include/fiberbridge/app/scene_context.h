@@ -15,6 +15,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace fiberbridge::app {
 
@@ -47,6 +48,10 @@ struct SceneContext {
   std::shared_ptr<const identify::Identification> identification;
   std::optional<specimen::Specimen> identified_specimen;
   std::optional<specimen::Material> identified_material;
+
+  /// The test records `dic` wrote (dic_record.csv) when the scene runs it: `reduce` reads these
+  /// instead of Test/Files, which then names the machine record `dic` read (item_dic.cc).
+  std::vector<std::string> records_from_dic;
 
   /// Results of the simulations that ran, by model name ("fem", "mpm", "beam"), for compare.
   std::map<std::string, result::SimulationResult> results;

@@ -1,0 +1,43 @@
+#pragma once
+// The hand-over to `reduce`: the testing machine's record (time, load-line opening, load) and the
+// DIC readings (crack length, delta_root) matched by time into one test record, one row per frame
+// inside the machine record's time span (dic_record.csv: time_s, opening_mm, load_N, a_mm,
+// delta_root_mm, a_sd_mm, delta_root_sd_mm).
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace fiberbridge::dic {
+
+struct MachineRecord {
+  std::string source;
+  std::vector<double> time;    ///< [s], not decreasing
+  std::vector<double> opening; ///< [m]
+  std::vector<double> load;    ///< [N]
+};
+
+/// Reads the machine record (CSV with a header, core/csv.h) with `columns` = "time_s: Time,
+/// opening_mm: Extension, load_N: Load" (our names before ':'; others of Test/Columns such as a_mm
+/// are ignored: the crack length is what DIC gives). InputError naming `where` or file:line for a
+/// missing column, a non-number, decreasing time or fewer than 2 rows.
+MachineRecord read_machine_record(const std::string& path, const std::string& columns,
+                                  const std::string& where);
+
+/// Linear interpolation of the record at t (inside [time.front(), time.back()]).
+void machine_at(const MachineRecord& record, double t, double& opening, double& load);
+
+struct DicRecordRow {
+  double time = NAN;                            ///< [s]
+  double opening = NAN;                         ///< [m]
+  double load = NAN;                            ///< [N]
+  double a = NAN, a_sd = NAN;                   ///< [m]
+  double delta_root = NAN, delta_root_sd = NAN; ///< [m]
+  std::size_t frame = 0;                        ///< index of the frame it came from
+};
+
+/// Writes dic_record.csv (mm and N, as the records reduce reads) with provenance comment lines.
+void write_dic_record(const std::string& path, const std::vector<DicRecordRow>& rows,
+                      const std::vector<std::string>& comments);
+
+} // namespace fiberbridge::dic

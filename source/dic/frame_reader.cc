@@ -1,0 +1,422 @@
+// Reading one DIC frame in the layouts of frame.h. One pass over the text, cells as string views
+// (a frame holds 10^4 points and a test 300 frames: the reader is most of the time, see
+// bench/bench_dic.cc), numbers by std::from_chars.
+#include "fiberbridge/dic/frame.h"
+
+#include "fiberbridge/core/error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstdio>
+#include <sstream>
+
+namespace fiberbridge::dic {
+
+namespace {
+
+const char* const our_names[] = {"x", "y", "u", "v", "eyy", "valid", "time_s"};
+enum Col { cx, cy, cu, cv, ceyy, cvalid, ctime, n_cols };
+
+std::string_view trim(std::string_view s) {
+  std::size_t b = 0, e = s.size();
+  while (b < e && (s[b] == ' ' || s[b] == '\t' || s[b] == '\r' || s[b] == '\n'))
+    ++b;
+  while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t' || s[e - 1] == '\r' || s[e - 1] == '\n'))
+    --e;
+  return s.substr(b, e - b);
+}
+
+std::string_view unquote(std::string_view s) {
+  s = trim(s);
+  if (s.size() >= 2 && s.front() == '"' && s.back() == '"')
+    s = trim(s.substr(1, s.size() - 2));
+  return s;
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (auto& c : out)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+/// The name before a unit in brackets ("epsy [%]" -> "epsy"), lower case.
+std::string stem_of(std::string_view header) {
+  const auto b = header.find('[');
+  return lower(trim(b == std::string_view::npos ? header : header.substr(0, b)));
+}
+
+/// The unit in brackets of a header ("epsy [%]" -> "%"), empty without one.
+std::string unit_of(std::string_view header) {
+  const auto b = header.find('['), e = header.find(']');
+  if (b == std::string_view::npos || e == std::string_view::npos || e < b)
+    return "";
+  return std::string(trim(header.substr(b + 1, e - b - 1)));
+}
+
+/// Splits a line into cells: ',' ';' '\t' as given, ' ' meaning runs of blanks.
+void split(std::string_view line, char delim, std::vector<std::string_view>& cells) {
+  cells.clear();
+  if (delim == ' ') {
+    std::size_t i = 0;
+    while (i < line.size()) {
+      while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r'))
+        ++i;
+      if (i >= line.size())
+        break;
+      const std::size_t b = i;
+      while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r')
+        ++i;
+      cells.push_back(line.substr(b, i - b));
+    }
+    return;
+  }
+  std::size_t b = 0;
+  while (true) {
+    const auto e = line.find(delim, b);
+    cells.push_back(line.substr(b, e == std::string_view::npos ? std::string_view::npos : e - b));
+    if (e == std::string_view::npos)
+      return;
+    b = e + 1;
+  }
+}
+
+enum class Cell { number, missing, text };
+
+/// Parses a cell: a finite number, a missing value (empty or NaN: a failed point), or text.
+/// A decimal comma (German GOM exports, `;` delimited) is accepted.
+Cell parse_number(std::string_view c, double& value) {
+  c = unquote(c);
+  if (c.empty()) {
+    value = NAN;
+    return Cell::missing;
+  }
+  if (c.front() == '+')
+    c.remove_prefix(1);
+  const auto r = std::from_chars(c.data(), c.data() + c.size(), value);
+  if (r.ec == std::errc() && r.ptr == c.data() + c.size()) {
+    if (std::isnan(value))
+      return Cell::missing;
+    return std::isfinite(value) ? Cell::number : Cell::text;
+  }
+  if (c.find(',') != std::string_view::npos && c.find('.') == std::string_view::npos) {
+    std::string dot(c);
+    std::replace(dot.begin(), dot.end(), ',', '.');
+    const auto r2 = std::from_chars(dot.data(), dot.data() + dot.size(), value);
+    if (r2.ec == std::errc() && r2.ptr == dot.data() + dot.size() && std::isfinite(value))
+      return Cell::number;
+  }
+  if (r.ec == std::errc::result_out_of_range)
+    return Cell::text;
+  return Cell::text;
+}
+
+/// Preset header names per layout, in order of preference (exact match; gom: by stem).
+std::vector<std::string> preset(Layout layout, int col, bool pixels) {
+  switch (layout) {
+  case Layout::vic:
+    switch (col) {
+    // VIC writes image columns x, y, u, v (pixels) and, when calibrated, metric X, Y, U, V:
+    // the pair the scene's Coordinates names comes first, the other is taken as stated.
+    case cx:
+      return pixels ? std::vector<std::string>{"x", "X"} : std::vector<std::string>{"X", "x"};
+    case cy:
+      return pixels ? std::vector<std::string>{"y", "Y"} : std::vector<std::string>{"Y", "y"};
+    case cu:
+      return pixels ? std::vector<std::string>{"u", "U"} : std::vector<std::string>{"U", "u"};
+    case cv:
+      return pixels ? std::vector<std::string>{"v", "V"} : std::vector<std::string>{"V", "v"};
+    case ceyy:
+      return {"eyy"};
+    case cvalid:
+      return {"sigma"};
+    default:
+      return {};
+    }
+  case Layout::dice:
+    switch (col) {
+    case cx:
+      return {"COORDINATE_X"};
+    case cy:
+      return {"COORDINATE_Y"};
+    case cu:
+      return {"DISPLACEMENT_X"};
+    case cv:
+      return {"DISPLACEMENT_Y"};
+    case ceyy:
+      return {"VSG_STRAIN_YY"};
+    case cvalid:
+      return {"SIGMA"};
+    default:
+      return {};
+    }
+  case Layout::gom:
+    switch (col) {
+    case cx:
+      return {"x_undef", "x", "x0"};
+    case cy:
+      return {"y_undef", "y", "y0"};
+    case cu:
+      return {"u", "dx", "disp_x", "displacement_x"};
+    case cv:
+      return {"v", "dy", "disp_y", "displacement_y"};
+    case ceyy:
+      return {"epsy", "eps_y", "epsilon_y", "eps_yy", "epsilon_yy", "eyy"};
+    default:
+      return {};
+    }
+  default:
+    switch (col) {
+    case ctime:
+      return {"time_s"};
+    default:
+      return {our_names[col]};
+    }
+  }
+}
+
+std::string where(const std::string& source, std::size_t line) {
+  return source + ":" + std::to_string(line);
+}
+
+} // namespace
+
+Layout parse_layout(const std::string& text, const std::string& where) {
+  const std::string t = lower(trim(text));
+  if (t == "auto" || t.empty())
+    return Layout::automatic;
+  if (t == "vic")
+    return Layout::vic;
+  if (t == "dice")
+    return Layout::dice;
+  if (t == "gom")
+    return Layout::gom;
+  if (t == "plain")
+    return Layout::plain;
+  throw InputError(where + ": '" + text +
+                   "' is not a frame layout; expected auto, vic, dice, gom "
+                   "or plain");
+}
+
+const char* layout_name(Layout layout) {
+  switch (layout) {
+  case Layout::vic:
+    return "vic";
+  case Layout::dice:
+    return "dice";
+  case Layout::gom:
+    return "gom";
+  case Layout::plain:
+    return "plain";
+  default:
+    return "auto";
+  }
+}
+
+FrameColumnMap FrameColumnMap::parse(const std::string& text, const std::string& where) {
+  FrameColumnMap map;
+  std::size_t b = 0;
+  while (b <= text.size()) {
+    auto e = text.find(',', b);
+    if (e == std::string::npos)
+      e = text.size();
+    const std::string_view entry = trim(std::string_view(text).substr(b, e - b));
+    b = e + 1;
+    if (entry.empty())
+      continue;
+    const auto colon = entry.find(':');
+    if (colon == std::string_view::npos)
+      throw InputError(where + ": entry '" + std::string(entry) +
+                       "' has no ':' (expected 'our_name: file header')");
+    const std::string ours(trim(entry.substr(0, colon)));
+    const std::string theirs(unquote(entry.substr(colon + 1)));
+    if (std::find(std::begin(our_names), std::end(our_names), ours) == std::end(our_names))
+      throw InputError(where + ": '" + ours +
+                       "' is not one of our frame columns (x, y, u, v, eyy, valid, time_s)");
+    if (theirs.empty())
+      throw InputError(where + ": '" + ours + "' is mapped to an empty header");
+    if (!map.file_header.emplace(ours, theirs).second)
+      throw InputError(where + ": '" + ours + "' is mapped twice");
+  }
+  return map;
+}
+
+RawFrame read_frame(const std::string& path, const FrameReadOptions& options) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f)
+    throw InputError(path + ": cannot open DIC frame for reading");
+  std::string text;
+  char buffer[1 << 16];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, f)) > 0;)
+    text.append(buffer, n);
+  std::fclose(f);
+  return parse_frame(text, path, options);
+}
+
+RawFrame parse_frame(std::string_view text, const std::string& source,
+                     const FrameReadOptions& options) {
+  RawFrame frame;
+  frame.source = source;
+  if (text.substr(0, 3) == "\xEF\xBB\xBF")
+    text.remove_prefix(3);
+
+  bool dice_banner = false;
+  std::string comment_header; // the last '#' line that looks like a header (nodemaps)
+  std::vector<std::string> header;
+  bool quoted_header = false;
+  char delim = ',';
+  int index[n_cols];
+  std::fill(std::begin(index), std::end(index), -1);
+  std::vector<std::string_view> cells;
+  std::size_t line_no = 0, pos = 0;
+  std::string header_line_text;
+
+  // Sets the header from a line, detects the delimiter, the layout and the columns.
+  const auto take_header = [&](std::string_view line, std::size_t at) {
+    header_line_text = std::string(trim(line));
+    delim = line.find(';') != std::string_view::npos    ? ';'
+            : line.find(',') != std::string_view::npos  ? ','
+            : line.find('\t') != std::string_view::npos ? '\t'
+                                                        : ' ';
+    split(line, delim, cells);
+    for (const auto c : cells) {
+      const auto t = trim(c);
+      quoted_header = quoted_header || (!t.empty() && t.front() == '"');
+      header.emplace_back(unquote(c));
+    }
+    for (std::size_t i = 0; i < header.size(); ++i)
+      if (header[i].empty())
+        throw InputError(where(source, at) + ": header column " + std::to_string(i + 1) +
+                         " has no name");
+    Layout layout = options.layout;
+    if (layout == Layout::automatic) {
+      const bool has_sigma = std::find(header.begin(), header.end(), "sigma") != header.end();
+      const bool has_dice = std::find(header.begin(), header.end(), "COORDINATE_X") != header.end();
+      layout = dice_banner || has_dice      ? Layout::dice
+               : delim == ';'               ? Layout::gom
+               : has_sigma || quoted_header ? Layout::vic
+                                            : Layout::plain;
+    }
+    frame.layout = layout;
+    for (int col = 0; col < n_cols; ++col) {
+      const auto mapped = options.columns.file_header.find(our_names[col]);
+      std::vector<std::string> candidates = mapped != options.columns.file_header.end()
+                                                ? std::vector<std::string>{mapped->second}
+                                                : preset(layout, col, options.pixel_coordinates);
+      const bool by_stem = layout == Layout::gom && mapped == options.columns.file_header.end();
+      for (const auto& want : candidates) {
+        for (std::size_t i = 0; i < header.size() && index[col] < 0; ++i)
+          if (by_stem ? stem_of(header[i]) == want : header[i] == want)
+            index[col] = static_cast<int>(i);
+        // A unit after the name ("X [mm]", "eyy [1]", as some VIC versions write): the name
+        // before it, case kept (VIC's x is pixels, X millimetres).
+        for (std::size_t i = 0; i < header.size() && index[col] < 0; ++i)
+          if (!by_stem && mapped == options.columns.file_header.end() &&
+              header[i].find('[') != std::string::npos &&
+              trim(std::string_view(header[i]).substr(0, header[i].find('['))) == want)
+            index[col] = static_cast<int>(i);
+        if (index[col] >= 0)
+          break;
+      }
+      const bool required = col <= ceyy;
+      if (index[col] < 0 && (required || mapped != options.columns.file_header.end())) {
+        std::string have;
+        for (const auto& h : header)
+          have += (have.empty() ? "" : ", ") + h;
+        std::string hint;
+        throw InputError(where(source, at) + ": missing column '" +
+                         (candidates.empty() ? std::string(our_names[col]) : candidates.front()) +
+                         "' for " + our_names[col] + " (" + layout_name(layout) +
+                         " layout; columns present: " + have + ")" + hint +
+                         "; map it with the frame Columns");
+      }
+      if (index[col] >= 0)
+        frame.used[our_names[col]] = header[index[col]];
+    }
+    const std::string unit = unit_of(header[index[ceyy]]);
+    frame.strain_factor = unit == "%" ? 0.01 : unit == "1" || unit == "-" || unit == "" ? 1.0 : -1;
+    if (unit.empty() && layout == Layout::gom)
+      frame.strain_factor = 0.01; // GOM writes strains in percent
+    if (frame.strain_factor < 0)
+      throw InputError(where(source, at) + ": strain column '" + header[index[ceyy]] +
+                       "' has unit [" + unit + "]; expected [%], [1] or none");
+  };
+
+  double values[n_cols];
+  while (pos < text.size()) {
+    auto end = text.find('\n', pos);
+    if (end == std::string_view::npos)
+      end = text.size();
+    const std::string_view line = text.substr(pos, end - pos);
+    pos = end + 1;
+    ++line_no;
+    const std::string_view content = trim(line);
+    if (content.empty())
+      continue; // blank lines separate VIC's areas of interest
+    if (content.substr(0, 3) == "***") {
+      dice_banner = true;
+      continue;
+    }
+    if (content.front() == '#') {
+      if (header.empty()) {
+        std::string_view h = content;
+        while (!h.empty() && h.front() == '#')
+          h.remove_prefix(1);
+        if (h.find(';') != std::string_view::npos || h.find(',') != std::string_view::npos)
+          comment_header = std::string(trim(h));
+      }
+      continue;
+    }
+    if (header.empty()) {
+      split(content, content.find(';') != std::string_view::npos ? ';' : ',', cells);
+      double probe;
+      if (parse_number(cells.front(), probe) == Cell::number) {
+        if (comment_header.empty())
+          throw InputError(where(source, line_no) +
+                           ": data before any header line (expected column names first)");
+        take_header(comment_header, line_no);
+      } else {
+        take_header(content, line_no);
+        continue;
+      }
+    }
+    split(content, delim, cells);
+    if (cells.size() != header.size()) {
+      if (content == header_line_text)
+        continue; // a header repeated before the next area of interest
+      throw InputError(where(source, line_no) + ": expected " + std::to_string(header.size()) +
+                       " values as the header has, found " + std::to_string(cells.size()));
+    }
+    bool failed = false;
+    for (int col = 0; col < n_cols; ++col) {
+      values[col] = NAN;
+      if (index[col] < 0)
+        continue;
+      const auto kind = parse_number(cells[index[col]], values[col]);
+      if (kind == Cell::text)
+        throw InputError(where(source, line_no) + ": column '" + header[index[col]] + "' holds '" +
+                         std::string(trim(cells[index[col]])) + "', expected a finite number");
+      if (kind == Cell::missing && col <= ceyy)
+        failed = true;
+    }
+    if (index[cvalid] >= 0 && values[cvalid] < 0)
+      failed = true;
+    if (std::isnan(frame.time) && !std::isnan(values[ctime]))
+      frame.time = values[ctime];
+    frame.x.push_back(values[cx]);
+    frame.y.push_back(values[cy]);
+    frame.u.push_back(values[cu]);
+    frame.v.push_back(values[cv]);
+    frame.eyy.push_back(values[ceyy] * frame.strain_factor);
+    frame.valid.push_back(failed ? 0 : 1);
+    frame.n_failed += failed;
+  }
+  if (header.empty())
+    throw InputError(source + ": no header line with column names (empty DIC frame?)");
+  if (frame.x.empty())
+    throw InputError(source + ": header found but no data rows");
+  return frame;
+}
+
+} // namespace fiberbridge::dic
