@@ -303,9 +303,11 @@ int cmd_dic(const std::vector<std::string>& args) {
       "y-axis", po::value<std::string>()->default_value("up"), "up|down")(
       "crack-plane-y", po::value<double>()->default_value(0), "in the frames' coordinates")(
       "notch-root-x", po::value<double>()->default_value(0), "in the frames' coordinates")(
-      "growth-direction", po::value<std::string>()->default_value("+x"),
-      "+x|-x")("frame-rate", po::value<double>()->default_value(1), "Hz")(
-      "first-frame-time", po::value<double>()->default_value(0), "s on the machine's clock")(
+      "growth-direction", po::value<std::string>()->default_value("+x"), "+x|-x")(
+      "crack-plane-points", po::value<std::string>()->default_value(""),
+      "'x0, y0, x1, y1': notch root and a point ahead on the plane (replaces the three above)")(
+      "frame-rate", po::value<double>()->default_value(1),
+      "Hz")("first-frame-time", po::value<double>()->default_value(0), "s on the machine's clock")(
       "frame-time-source", po::value<std::string>()->default_value("auto"),
       "auto|column|name|index")("threshold", po::value<double>()->default_value(0.01),
                                 "crack-normal strain at the tip")(
@@ -331,6 +333,7 @@ int cmd_dic(const std::vector<std::string>& args) {
   s.crack_plane_y = vm["crack-plane-y"].as<double>();
   s.notch_root_x = vm["notch-root-x"].as<double>();
   s.growth_sign = choice("growth-direction", {"+x", "-x"}) == "-x" ? -1 : 1;
+  s.crack_plane_points = vm["crack-plane-points"].as<std::string>();
   s.frame_rate = vm["frame-rate"].as<double>();
   s.first_frame_time = vm["first-frame-time"].as<double>();
   s.frame_time_source = vm["frame-time-source"].as<std::string>();

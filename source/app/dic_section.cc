@@ -3,6 +3,8 @@
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 
+#include <sstream>
+
 namespace fiberbridge::app {
 
 using units::mm;
@@ -30,6 +32,10 @@ void DicSection::declare_parameters(dealii::ParameterHandler& prm) {
                     "x of the initial notch root in the frames' coordinates (mm or px).");
   prm.declare_entry("Growth direction", "+x", dealii::Patterns::Selection("+x|-x"),
                     "Direction in which the crack grows in the frames.");
+  prm.declare_entry("Crack plane points", "", dealii::Patterns::Anything(),
+                    "Optional 'x0, y0, x1, y1' in the frames' coordinates: the notch root and a "
+                    "point on the crack plane ahead of it (a specimen not level in the image, up "
+                    "to 10 degrees); replaces Notch root x, Crack plane y and Growth direction.");
   prm.declare_entry("Frame rate", "1", dealii::Patterns::Double(0), "Images per second (Hz).");
   prm.declare_entry("First frame time", "0", dealii::Patterns::Double(),
                     "Time of the first frame on the machine record's clock (s).");
@@ -57,6 +63,7 @@ void DicSection::parse_parameters(dealii::ParameterHandler& prm) {
   crack_plane_y = prm.get_double("Crack plane y");
   notch_root_x = prm.get_double("Notch root x");
   growth_sign = prm.get("Growth direction") == "-x" ? -1 : +1;
+  crack_plane_points = prm.get("Crack plane points");
   frame_rate = prm.get_double("Frame rate");
   first_frame_time = prm.get_double("First frame time");
   frame_time_source = prm.get("Frame time source");
@@ -84,6 +91,15 @@ dic::DicOptions DicSection::options() const {
   o.geometry.crack_plane_y = crack_plane_y;
   o.geometry.notch_root_x = notch_root_x;
   o.geometry.growth_sign = growth_sign;
+  if (crack_plane_points.find_first_not_of(" \t") != std::string::npos) {
+    double p[4];
+    std::istringstream in(crack_plane_points);
+    char comma;
+    if (!(in >> p[0] >> comma >> p[1] >> comma >> p[2] >> comma >> p[3]) || !(in >> std::ws).eof())
+      throw InputError("DIC/Crack plane points: expected 'x0, y0, x1, y1', got '" +
+                       crack_plane_points + "'");
+    o.geometry.set_from_points(p[0], p[1], p[2], p[3], "DIC/Crack plane points");
+  }
   o.tip.threshold = threshold;
   o.clock.frame_rate = frame_rate;
   o.clock.first_frame_time = first_frame_time;

@@ -10,9 +10,12 @@
 namespace fiberbridge::dic {
 
 PlaneProfile crack_plane_profile(const PlaneFrame& f, double h) {
+  // Rows of a grid sit at whole and half spacings from the plane; the estimated spacing and the
+  // coordinates carry rounding, so the limits get a thousandth of a spacing of slack.
+  const double slack = 1e-3 * h;
   std::vector<std::size_t> near;
   for (std::size_t i = 0; i < f.s.size(); ++i)
-    if (std::isfinite(f.s[i]) && std::isfinite(f.n[i]) && std::abs(f.n[i]) <= 1.5 * h)
+    if (std::isfinite(f.s[i]) && std::isfinite(f.n[i]) && std::abs(f.n[i]) <= 1.5 * h + slack)
       near.push_back(i);
   std::sort(near.begin(), near.end(),
             [&](std::size_t a, std::size_t b) { return f.s[a] < f.s[b]; });
@@ -39,9 +42,9 @@ PlaneProfile crack_plane_profile(const PlaneFrame& f, double h) {
     if (above >= 0 && below >= 0) {
       const double w = (0 - f.n[below]) / (f.n[above] - f.n[below]);
       e_plane = f.eyy[below] + w * (f.eyy[above] - f.eyy[below]);
-    } else if (above >= 0 && f.n[above] <= 0.5 * h) {
+    } else if (above >= 0 && f.n[above] <= 0.5 * h + slack) {
       e_plane = f.eyy[above];
-    } else if (below >= 0 && -f.n[below] <= 0.5 * h) {
+    } else if (below >= 0 && -f.n[below] <= 0.5 * h + slack) {
       e_plane = f.eyy[below];
     }
     p.s.push_back(s_sum / static_cast<double>(e - b));
@@ -94,9 +97,13 @@ TipReading locate_tip(const PlaneProfile& p, const TipRule& rule, double h) {
     r.note = "no point on the crack plane ahead of the notch root";
     return r;
   }
-  const auto open = [&](std::size_t j) { return !(p.eyy[j] < rule.threshold); };
   long last_open = -1;
   int dips = 0;
+  // A failed station (NaN) extends the open run only straight after an open one: correlation is
+  // lost where the crack has opened, not ahead of a station already below the threshold.
+  const auto open = [&](std::size_t j) {
+    return p.eyy[j] >= rule.threshold || (std::isnan(p.eyy[j]) && dips == 0);
+  };
   for (std::size_t j = i0; j < n; ++j) {
     if (open(j)) {
       last_open = static_cast<long>(j);

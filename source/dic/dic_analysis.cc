@@ -46,7 +46,7 @@ double band_mean_abs_n(const PlaneFrame& f, double h, std::size_t& count, double
     if (!std::isfinite(f.n[i]))
       continue;
     nearest = std::min(nearest, std::abs(f.n[i]));
-    if (std::abs(f.n[i]) <= 1.5 * h) {
+    if (std::abs(f.n[i]) <= 1.5 * h + 1e-3 * h) { // as crack_plane_profile's band
       sum += std::abs(f.n[i]);
       ++count;
     }

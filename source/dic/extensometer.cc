@@ -24,7 +24,8 @@ PointFit fit_point(const PlaneFrame& f, double n0, double h, int k) {
   std::vector<std::pair<double, std::size_t>> cand;
   const double radius2 = 9 * h * h;
   for (std::size_t i = 0; i < f.s.size(); ++i) {
-    if (!f.valid[i] || !std::isfinite(f.vn[i]) || std::abs(f.n[i]) < 0.5 * h ||
+    // Rows at half a spacing (a plane midway between rows) are kept: the slack absorbs rounding.
+    if (!f.valid[i] || !std::isfinite(f.vn[i]) || std::abs(f.n[i]) < 0.5 * h - 1e-3 * h ||
         (f.n[i] > 0) != (n0 > 0))
       continue;
     const double d2 = f.s[i] * f.s[i] + (f.n[i] - n0) * (f.n[i] - n0);

@@ -344,6 +344,7 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
   };
 
   double values[n_cols];
+  bool valid_is_flag = false;
   while (pos < text.size()) {
     auto end = text.find('\n', pos);
     if (end == std::string_view::npos)
@@ -378,8 +379,10 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
         take_header(comment_header, line_no);
       } else {
         take_header(content, line_no);
+        valid_is_flag = index[cvalid] >= 0 && lower(header[index[cvalid]]) == "valid";
         continue;
       }
+      valid_is_flag = index[cvalid] >= 0 && lower(header[index[cvalid]]) == "valid";
     }
     split(content, delim, cells);
     if (cells.size() != header.size()) {
@@ -400,7 +403,9 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
       if (kind == Cell::missing && col <= ceyy)
         failed = true;
     }
-    if (index[cvalid] >= 0 && values[cvalid] < 0)
+    // A confidence column (VIC's sigma, DICe's SIGMA) marks a failed point by a negative value;
+    // a flag column named valid also by 0.
+    if (index[cvalid] >= 0 && (values[cvalid] < 0 || (valid_is_flag && values[cvalid] == 0)))
       failed = true;
     if (std::isnan(frame.time) && !std::isnan(values[ctime]))
       frame.time = values[ctime];

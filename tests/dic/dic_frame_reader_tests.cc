@@ -126,6 +126,18 @@ TEST(DicFrameReader, PlainLayoutWithColumnMapAndTime) {
   EXPECT_DOUBLE_EQ(f.time, 7.5);
 }
 
+TEST(DicFrameReader, ValidFlagAndSigmaColumns) {
+  // A column headed valid is a flag (0 failed); a mapped confidence column fails below 0 only.
+  const RawFrame flag = parse_frame("x,y,u,v,eyy,valid\n1,2,3,4,0,0\n1,3,3,4,0,1\n", "f.csv", {});
+  EXPECT_EQ(flag.n_failed, 1u);
+  EXPECT_EQ(flag.valid[0], 0);
+  FrameReadOptions o;
+  o.columns = FrameColumnMap::parse("valid: conf", "DIC/Columns");
+  const RawFrame conf = parse_frame("x,y,u,v,eyy,conf\n1,2,3,4,0,0\n1,3,3,4,0,-1\n", "f.csv", o);
+  EXPECT_EQ(conf.n_failed, 1u);
+  EXPECT_EQ(conf.valid[1], 0);
+}
+
 TEST(DicFrameReader, ColumnMapErrorsNameTheKey) {
   EXPECT_THROW(FrameColumnMap::parse("eyy e_yy", "DIC/Columns"), InputError);
   EXPECT_THROW(FrameColumnMap::parse("strain: e_yy", "DIC/Columns"), InputError);

@@ -167,11 +167,13 @@ enum class Out { vic, dice, dice_space, gom, plain };
 inline void write_frame(const std::string& path, const dic::PlaneFrame& f,
                         const dic::FrameGeometry& g, Out out, double time_s = NAN) {
   std::FILE* o = std::fopen(path.c_str(), "w");
-  const double k = g.scale(), sy = g.y_down ? -1.0 : 1.0, sx = g.growth_sign;
-  const auto X = [&](std::size_t i) { return g.frame_x(f.s[i]); };
-  const auto Y = [&](std::size_t i) { return g.frame_y(f.n[i]); };
-  const auto U = [&](std::size_t i) { return sx * f.us[i] / k; };
-  const auto V = [&](std::size_t i) { return sy * f.vn[i] / k; };
+  const double k = g.scale(), flip = g.y_down ? -1.0 : 1.0;
+  double sx, sy, nx, ny;
+  g.axes(sx, sy, nx, ny);
+  const auto X = [&](std::size_t i) { return g.frame_x(f.s[i], f.n[i]); };
+  const auto Y = [&](std::size_t i) { return g.frame_y(f.n[i], f.s[i]); };
+  const auto U = [&](std::size_t i) { return (f.us[i] * sx + f.vn[i] * nx) / k; };
+  const auto V = [&](std::size_t i) { return flip * (f.us[i] * sy + f.vn[i] * ny) / k; };
   const std::size_t n = f.s.size();
   switch (out) {
   case Out::vic: {

@@ -24,6 +24,7 @@ struct DicSection {
   bool y_down = false;
   double crack_plane_y = 0, notch_root_x = 0; ///< frames' coordinates
   int growth_sign = +1;
+  std::string crack_plane_points; ///< "x0, y0, x1, y1" (overrides the three above) or empty
   double frame_rate = 1, first_frame_time = 0; ///< [Hz], [s]
   std::string frame_time_source;               ///< auto | column | name | index
   double threshold = 0.01;

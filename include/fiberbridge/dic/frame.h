@@ -31,7 +31,8 @@ const char* layout_name(Layout layout);
 
 /// Which header of the frames holds each of our columns: x, y (reference coordinates), u, v
 /// (displacements), eyy (strain normal to the crack plane), valid (a confidence column: a
-/// negative value marks a failed point, as VIC's sigma and DICe's SIGMA do), time_s (optional).
+/// negative value marks a failed point, as VIC's sigma and DICe's SIGMA do; a column headed
+/// `valid` is a flag, 0 or negative failed), time_s (optional).
 /// Without an entry the layout's preset names are used.
 struct FrameColumnMap {
   std::map<std::string, std::string> file_header; ///< our name -> header in the frames

@@ -19,12 +19,24 @@ struct FrameGeometry {
   double crack_plane_y = 0; ///< in the frames' coordinates (mm or px)
   double notch_root_x = 0;  ///< in the frames' coordinates (mm or px)
   int growth_sign = +1;     ///< +1: the crack grows towards +x; -1: towards -x
+  /// [rad] the crack plane's angle to the frames' x axis (y up, counter-clockwise for +x growth):
+  /// a specimen not quite level in the image. The strain read stays the frames' eyy, which is
+  /// the crack-normal strain to within tilt^2 and 2 tilt exy (exy ~ 0 on the plane of a
+  /// symmetric DCB); set_from_points() refuses tilts over 10 degrees.
+  double tilt = 0;
+
+  /// The root and the plane from two marked points in the frames' coordinates: the notch root
+  /// (x0, y0) and a point (x1, y1) on the crack plane ahead of it. InputError naming `where` for
+  /// coincident points or a plane tilted more than 10 degrees from the frames' x axis.
+  void set_from_points(double x0, double y0, double x1, double y1, const std::string& where);
 
   /// Metres per unit of the frames' coordinates and displacements.
   double scale() const;
   /// Frame coordinates (file units) of a point at (s, n) in crack coordinates [m].
-  double frame_x(double s) const;
-  double frame_y(double n) const;
+  double frame_x(double s, double n = 0) const;
+  double frame_y(double n, double s = 0) const;
+  /// Unit vectors of s and n in the frames' coordinates with y up.
+  void axes(double& sx, double& sy, double& nx, double& ny) const;
 };
 
 struct PlaneFrame {
