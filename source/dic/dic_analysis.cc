@@ -234,7 +234,7 @@ DicAnalysis analyse_frames(const std::vector<FrameFile>& files, const DicOptions
 std::vector<DicRecordRow> match_to_machine(const DicAnalysis& a, const MachineRecord& m, double a0,
                                            std::vector<std::string>& notes) {
   std::vector<DicRecordRow> rows;
-  std::size_t outside = 0;
+  std::size_t outside = 0, floored = 0;
   for (std::size_t i = 0; i < a.frames.size(); ++i) {
     const FrameResult& f = a.frames[i];
     if (!f.used)
@@ -251,8 +251,19 @@ std::vector<DicRecordRow> match_to_machine(const DicAnalysis& a, const MachineRe
     r.a_sd = f.s_tip_sd;
     r.delta_root = f.extensometer.opening;
     r.delta_root_sd = f.extensometer.sd;
+    // The arms cannot overlap: an opening below zero by no more than its noise (3 sd, before the
+    // load opens the root) is a zero opening; the record reader refuses a negative one. A larger
+    // negative reading is kept, for the reader to refuse (a wrong Y axis or crack plane).
+    if (r.delta_root < 0 && r.delta_root >= -3 * r.delta_root_sd) {
+      r.delta_root = 0;
+      ++floored;
+    }
     rows.push_back(r);
   }
+  if (floored)
+    notes.push_back(std::to_string(floored) +
+                    " frame(s) with delta_root below zero within 3 standard deviations (noise "
+                    "before the root opens) written as 0");
   if (outside)
     notes.push_back(std::to_string(outside) +
                     " used frame(s) outside the machine record's time "
