@@ -11,14 +11,17 @@ record, the truth, dic_scene.prm); for each strain threshold the generated scene
     root, and the opening at the rule's tip the strain rule implies, threshold x W / 1.5
     (docs/dic_tip_rule.md);
   - delta_root by the extensometer against the truth's delta_root_mm (largest |difference|);
-  - the law from the DIC-derived R(delta_root) through Eq. 6 (the scene's cohesive_law_eq5.csv)
-    and the law from the FEM's own R_energy(delta_root) rows (rcurve_fem.csv, an extract scene
-    with Delta c = the rows' last delta_root), both against the input law: RMS over
+  - the law from the DIC-derived R(delta_root) through Eq. 6 (the scene's cohesive_law_eq5.csv),
+    from the FEM's own record (the DIC record's rows with the truth's zone front and
+    delta_root, the same reduce and extract) and from the FEM's own R_energy(delta_root) rows
+    (rcurve_fem.csv, an extract scene with Delta c = the rows' last delta_root), all against
+    the input law (J_tip given, 200 J/m^2, for every route): RMS over
     [0, 1.05 max(delta_c)] divided by the input's peak (analysis/law_routes.h's rms_rel).
 
 Usage: scripts/dic_virtual_study.py [BUILD_DIR] [--case short|pva] [--out DIR]
 Environment: DIC_STUDY_WINDOWS (mm, default 2,3,5), DIC_STUDY_THRESHOLDS (default 0.005,0.01,0.02),
-DIC_STUDY_HALF_WIDTH (Eq. 6 slope half-width in grid intervals for both routes, default 10).
+DIC_STUDY_HALF_WIDTH (Eq. 6 slope half-width in grid intervals for every route, default 10),
+DIC_STUDY_SMOOTHING (reduce's Test/Smoothing window in mm for both records, default 8).
 Cases: short = the ctest's linear-softening DCB (1000 kPa, delta_c 0.4 mm, 120 mm, 1 mm elements,
 0.5 mm points, seconds per run); pva = prm/fem_virtual_test_pva.prm's PVA law on the seed's DCB
 (minutes per run).
@@ -42,6 +45,7 @@ out = os.path.abspath(out or os.path.join("output", "dic_virtual_study_" + case)
 windows = [float(v) for v in os.environ.get("DIC_STUDY_WINDOWS", "2,3,5").split(",")]
 thresholds = [float(v) for v in os.environ.get("DIC_STUDY_THRESHOLDS", "0.005,0.01,0.02").split(",")]
 half_width = int(os.environ.get("DIC_STUDY_HALF_WIDTH", "10"))
+smoothing = float(os.environ.get("DIC_STUDY_SMOOTHING", "8"))
 
 if case == "short":
     # tests/fem/dic_end_to_end_tests.cc's case (fem_test::short_dcb, the linear-softening law).
@@ -62,14 +66,14 @@ subsection Cohesive law
 end
 subsection FEM
   set Element size = 1
-  set Steady state window = 8
+  set Steady state window = 20
   subsection Virtual DIC
     set Enabled = true
     set Format = vic
-    set Frame rate = 10
-    set Record rate = 100
+    set Frame rate = 50
+    set Record rate = 200
     set Crosshead rate = 60
-    set First frame time = 0.05
+    set First frame time = 0.01
     set X from = 35
     set X to = 120
     set Y from = -6
@@ -92,13 +96,17 @@ subsection Cohesive law
 end
 subsection FEM
   set Element size = 2
+  # Run on 30 mm past the steady-state onset (to the specimen's end): the extensometer's
+  # R(delta_root) needs its plateau beyond delta_c for the automatic delta_c (the default 10 mm
+  # leaves R still rising there).
+  set Steady state window = 30
   subsection Virtual DIC
     set Enabled = true
     set Format = vic
     set Frame rate = 1
     set Crosshead rate = 10
     set X from = 90
-    set X to = 250
+    set X to = 300
     set Y from = -10
     set Y to = 10
     set Point spacing = 1
@@ -162,11 +170,14 @@ def at_time(truth, t, key):
 
 
 os.makedirs(out, exist_ok=True)
-law_file = os.path.join(out, "input_law.csv")
-with open(law_file, "w") as f:
-    f.write("delta_mm,sigma_kPa\n" + "".join("%g,%g\n" % p for p in law_points))
 a0 = 40.0 if case == "short" else None
-print("| W mm | threshold | threshold x W / 1.5 um | frames used | rows past root | front - a_DIC mm mean [min, max] | a_DIC - crack_tip mm mean [min, max] | delta_root max abs err um | Eq. 6 RMS/peak DIC | Eq. 6 RMS/peak FEM own | delta_c DIC mm |")
+j_tip = 200
+common = ["--set", "Data/Smoothing half-width=%d" % half_width, "--set", "Data/J tip=%g" % j_tip,
+          "--set", "Test/Smoothing window=%g" % smoothing]
+stat = lambda v: "%+.2f [%+.2f, %+.2f]" % (sum(v) / len(v), min(v), max(v)) if v else "-"
+print("| W mm | threshold | thr x W / 1.5 um | rows | a_DIC - zone_front mm, mean [min, max] | "
+      "a_DIC - crack_tip mm, mean [min, max] | delta_root max abs err um (front > a0 + 2 mm) | "
+      "Eq. 6 RMS DIC | Eq. 6 RMS FEM record | Eq. 6 RMS FEM rows | delta_c DIC mm |")
 print("|---|---|---|---|---|---|---|---|---|---|---|")
 for W in windows:
     fdir = os.path.join(out, "fem_W%g" % W)
@@ -176,10 +187,12 @@ for W in windows:
         f.write(scene_head.format(window=W))
     run([exe, "run", scene], scene + ".log")
     vt = os.path.join(fdir, "virtual_test")
+    dic_scene = os.path.join(vt, "dic_scene.prm")
     truth = rows(os.path.join(vt, "virtual_test_truth.csv"))
     if a0 is None:
         a0 = float(truth[0]["crack_tip_mm"])
-    # The FEM's own R_energy(delta_root) rows (delta_root increasing), through an extract scene.
+    # Route 1, the FEM's own rows: R_energy(delta_root) per advance (delta_root increasing; they
+    # stop at delta_c, which extract is given).
     own = os.path.join(fdir, "rdelta_own.csv")
     last = 0.0
     with open(own, "w") as f:
@@ -192,25 +205,39 @@ for W in windows:
     escene = os.path.join(fdir, "extract_own.prm")
     with open(escene, "w") as f:
         f.write("set Output directory = %s\nset Run = extract\n" % edir)
-        f.write("subsection Data\n  set File = %s\n  set Delta c = %.6g\n"
-                "  set Smoothing half-width = %d\nend\n" % (own, last, half_width))
+        f.write("subsection Data\n  set File = %s\n  set Delta c = %.6g\n  set J tip = %g\n"
+                "  set Smoothing half-width = %d\nend\n" % (own, last, j_tip, half_width))
     run([exe, "run", escene], escene + ".log")
-    own_rms, _ = law_rms(os.path.join(edir, "cohesive_law_eq5.csv"))
+    rows_rms, _ = law_rms(os.path.join(edir, "cohesive_law_eq5.csv"))
+    rec_rms = None
     for thr in thresholds:
         ddir = os.path.join(fdir, "dic_t%g" % thr)
-        run([exe, "run", os.path.join(vt, "dic_scene.prm"), "--set", "Output directory=" + ddir,
-             "--set", "DIC/Strain threshold=%g" % thr,
-             "--set", "Data/Smoothing half-width=%d" % half_width], ddir + ".log")
+        run([exe, "run", dic_scene, "--set", "Output directory=" + ddir,
+             "--set", "DIC/Strain threshold=%g" % thr] + common, ddir + ".log")
         rec = rows(os.path.join(ddir, "dic_record.csv"))
+        if rec_rms is None:
+            # Route 2, the FEM's own record: the DIC record's rows with the truth's zone front
+            # and delta_root, through the same reduce and extract.
+            own_rec = os.path.join(fdir, "fem_own_record.csv")
+            with open(own_rec, "w") as f:
+                f.write("time_s,opening_mm,load_N,a_mm,delta_root_mm\n")
+                for r in rec:
+                    t = float(r["time_s"])
+                    f.write("%s,%s,%s,%.9g,%.9g\n" % (r["time_s"], r["opening_mm"], r["load_N"],
+                            at_time(truth, t, "zone_front_mm"), at_time(truth, t, "delta_root_mm")))
+            odir = os.path.join(fdir, "fem_own_record")
+            run([exe, "run", dic_scene, "--set", "Output directory=" + odir, "--set",
+                 "Run=reduce, extract", "--set", "Test/Files=" + own_rec] + common, odir + ".log")
+            rec_rms, _ = law_rms(os.path.join(odir, "cohesive_law_eq5.csv"))
         lag, ahead, err = [], [], []
         for r in rec:
             t, a = float(r["time_s"]), float(r["a_mm"])
-            err.append(abs(float(r["delta_root_mm"]) - at_time(truth, t, "delta_root_mm")) * 1e3)
+            if at_time(truth, t, "zone_front_mm") >= a0 + 2:
+                err.append(abs(float(r["delta_root_mm"]) - at_time(truth, t, "delta_root_mm")) * 1e3)
             if a > a0 + 1e-9:
-                lag.append(at_time(truth, t, "zone_front_mm") - a)
+                lag.append(a - at_time(truth, t, "zone_front_mm"))
                 ahead.append(a - at_time(truth, t, "crack_tip_mm"))
         dic_rms, dc = law_rms(os.path.join(ddir, "cohesive_law_eq5.csv"))
-        stat = lambda v: "%.2f [%.2f, %.2f]" % (sum(v) / len(v), min(v), max(v)) if v else "-"
-        print("| %g | %g | %.1f | %d | %d | %s | %s | %.2f | %.3f | %.3f | %.3f |" % (
-            W, thr, thr * W / 1.5 * 1e3, len(rec), len(lag), stat(lag), stat(ahead), max(err),
-            dic_rms, own_rms, dc), flush=True)
+        print("| %g | %g | %.1f | %d | %s | %s | %.2f | %.3f | %.3f | %.3f | %.3f |" % (
+            W, thr, thr * W / 1.5 * 1e3, len(rec), stat(lag), stat(ahead), max(err) if err else -1,
+            dic_rms, rec_rms, rows_rms, dc), flush=True)
