@@ -6,6 +6,8 @@
 #include "fiberbridge/core/units.h"
 
 #include <algorithm>
+#include <iomanip>
+#include <sstream>
 
 namespace fiberbridge::dic {
 
@@ -75,16 +77,23 @@ void machine_at(const MachineRecord& r, double t, double& opening, double& load)
   load = r.load[j - 1] + w * (r.load[j] - r.load[j - 1]);
 }
 
+std::string dic_record_text(const std::vector<DicRecordRow>& rows,
+                            const std::vector<std::string>& comments) {
+  std::ostringstream s;
+  s << std::setprecision(10);
+  for (const auto& c : comments)
+    s << "# " << c << "\n";
+  s << "time_s,opening_mm,load_N,a_mm,delta_root_mm,a_sd_mm,delta_root_sd_mm\n";
+  for (const auto& r : rows)
+    s << r.time << ',' << r.opening / units::mm << ',' << r.load << ',' << r.a / units::mm << ','
+      << r.delta_root / units::mm << ',' << r.a_sd / units::mm << ',' << r.delta_root_sd / units::mm
+      << '\n';
+  return s.str();
+}
+
 void write_dic_record(const std::string& path, const std::vector<DicRecordRow>& rows,
                       const std::vector<std::string>& comments) {
-  CsvWriter w(
-      path,
-      {"time_s", "opening_mm", "load_N", "a_mm", "delta_root_mm", "a_sd_mm", "delta_root_sd_mm"},
-      comments);
-  for (const auto& r : rows)
-    w.row({r.time, r.opening / units::mm, r.load, r.a / units::mm, r.delta_root / units::mm,
-           r.a_sd / units::mm, r.delta_root_sd / units::mm});
-  w.close();
+  write_file_atomically(path, dic_record_text(rows, comments));
 }
 
 } // namespace fiberbridge::dic

@@ -36,7 +36,10 @@ struct DicRecordRow {
   std::size_t frame = 0;                        ///< index of the frame it came from
 };
 
-/// Writes dic_record.csv (mm and N, as the records reduce reads) with provenance comment lines.
+/// The text of dic_record.csv (mm and N, as the records reduce reads) with provenance comments.
+std::string dic_record_text(const std::vector<DicRecordRow>& rows,
+                            const std::vector<std::string>& comments);
+/// Writes it atomically (core/csv.h; nothing on MPI ranks other than 0, core/output_guard.h).
 void write_dic_record(const std::string& path, const std::vector<DicRecordRow>& rows,
                       const std::vector<std::string>& comments);
 
