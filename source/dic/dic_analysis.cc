@@ -8,35 +8,57 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <thread>
+#include <unordered_map>
+#include <utility>
+#include <vector>
 
 namespace fiberbridge::dic {
 
 namespace {
 
+/// The first frame's point positions bucketed by spacing, to tell whether a frame's points are the
+/// same material points. Matched point by point, not by means: GOM/ZEISS exports leave failed
+/// facets out, so a frame may hold fewer points than the first and its means move with them.
+class ReferenceGrid {
+public:
+  void build(const PlaneFrame& f, double h) {
+    h_ = h;
+    for (std::size_t i = 0; i < f.s.size(); ++i)
+      if (std::isfinite(f.s[i]) && std::isfinite(f.n[i]))
+        cells_[key(cell(f.s[i]), cell(f.n[i]))].push_back({f.s[i], f.n[i]});
+  }
+  /// Whether a reference point lies within `tol` (< h) of (s, n) in both coordinates.
+  bool has(double s, double n, double tol) const {
+    const long cs = cell(s), cn = cell(n);
+    for (long ds = -1; ds <= 1; ++ds)
+      for (long dn = -1; dn <= 1; ++dn) {
+        const auto it = cells_.find(key(cs + ds, cn + dn));
+        if (it != cells_.end())
+          for (const auto& p : it->second)
+            if (std::abs(p.first - s) <= tol && std::abs(p.second - n) <= tol)
+              return true;
+      }
+    return false;
+  }
+
+private:
+  long cell(double x) const { return std::lround(std::floor(x / h_)); }
+  static std::uint64_t key(long a, long b) {
+    return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+  }
+  double h_ = 1;
+  std::unordered_map<std::uint64_t, std::vector<std::pair<double, double>>> cells_;
+};
+
 /// What every frame is checked against: the first frame's points near the crack plane.
 struct Reference {
   double spacing = NAN;
   double band_mean_abs_n = NAN; ///< [m] mean |n| of the points within 1.5 spacings of the plane
-  double mean_s = NAN, mean_n = NAN, mean_abs_n = NAN; ///< [m] over every point placed
+  ReferenceGrid grid;           ///< every point placed (failed or not)
 };
-
-/// Mean s, n and |n| of the points with coordinates (failed or not): the reference grid.
-void grid_means(const PlaneFrame& f, double& ms, double& mn, double& man) {
-  double count = 0;
-  ms = mn = man = 0;
-  for (std::size_t i = 0; i < f.s.size(); ++i)
-    if (std::isfinite(f.s[i]) && std::isfinite(f.n[i])) {
-      ms += f.s[i];
-      mn += f.n[i];
-      man += std::abs(f.n[i]);
-      ++count;
-    }
-  ms /= count;
-  mn /= count;
-  man /= count;
-}
 
 double band_mean_abs_n(const PlaneFrame& f, double h, std::size_t& count, double& nearest) {
   double sum = 0;
@@ -78,15 +100,18 @@ FrameResult analyse_one(const PlaneFrame& f, const Reference& ref, const DicOpti
   // The points are material points: a frame must give the same reference coordinates as the
   // first (an export in the deformed configuration, another area of interest or a moved image
   // origin shifts them).
-  double ms, mn, man;
-  grid_means(f, ms, mn, man);
-  if (std::abs(ms - ref.mean_s) > 0.25 * h || std::abs(mn - ref.mean_n) > 0.25 * h ||
-      std::abs(man - ref.mean_abs_n) > 0.25 * h) {
-    r.notes.push_back("points moved off the crack plane: the points' reference coordinates differ "
-                      "from the first frame's (mean shift " +
-                      fmt((ms - ref.mean_s) * 1e3) + " mm along, " + fmt((mn - ref.mean_n) * 1e3) +
-                      " mm across the plane; frames must give reference coordinates); frame left "
-                      "out");
+  std::size_t placed = 0, matched = 0;
+  for (std::size_t i = 0; i < f.s.size(); ++i)
+    if (std::isfinite(f.s[i]) && std::isfinite(f.n[i])) {
+      ++placed;
+      matched += ref.grid.has(f.s[i], f.n[i], 0.25 * h) ? 1 : 0;
+    }
+  // 95 %: a frame may add a few points of its own (an area of interest grown at its edge).
+  if (double(matched) < 0.95 * double(placed)) {
+    r.notes.push_back("points moved off the crack plane: " + std::to_string(placed - matched) +
+                      " of " + std::to_string(placed) +
+                      " points are not within a quarter spacing of a point of the first frame "
+                      "(frames must give reference coordinates); frame left out");
     return r;
   }
   r.profile = crack_plane_profile(f, h);
@@ -125,7 +150,7 @@ DicAnalysis analyse_frames(const std::vector<FrameFile>& files, const DicOptions
   std::size_t count = 0;
   double nearest = NAN;
   ref.band_mean_abs_n = band_mean_abs_n(first, ref.spacing, count, nearest);
-  grid_means(first, ref.mean_s, ref.mean_n, ref.mean_abs_n);
+  ref.grid.build(first, ref.spacing);
   if (count == 0)
     throw InputError(files.front().path + ": no point within 1.5 point spacings (" +
                      fmt(1.5 * ref.spacing * 1e3) + " mm) of the crack plane (nearest " +
@@ -209,7 +234,7 @@ DicAnalysis analyse_frames(const std::vector<FrameFile>& files, const DicOptions
 std::vector<DicRecordRow> match_to_machine(const DicAnalysis& a, const MachineRecord& m, double a0,
                                            std::vector<std::string>& notes) {
   std::vector<DicRecordRow> rows;
-  std::size_t outside = 0;
+  std::size_t outside = 0, floored = 0;
   for (std::size_t i = 0; i < a.frames.size(); ++i) {
     const FrameResult& f = a.frames[i];
     if (!f.used)
@@ -226,8 +251,19 @@ std::vector<DicRecordRow> match_to_machine(const DicAnalysis& a, const MachineRe
     r.a_sd = f.s_tip_sd;
     r.delta_root = f.extensometer.opening;
     r.delta_root_sd = f.extensometer.sd;
+    // The arms cannot overlap: an opening below zero by no more than its noise (3 sd, before the
+    // load opens the root) is a zero opening; the record reader refuses a negative one. A larger
+    // negative reading is kept, for the reader to refuse (a wrong Y axis or crack plane).
+    if (r.delta_root < 0 && r.delta_root >= -3 * r.delta_root_sd) {
+      r.delta_root = 0;
+      ++floored;
+    }
     rows.push_back(r);
   }
+  if (floored)
+    notes.push_back(std::to_string(floored) +
+                    " frame(s) with delta_root below zero within 3 standard deviations (noise "
+                    "before the root opens) written as 0");
   if (outside)
     notes.push_back(std::to_string(outside) +
                     " used frame(s) outside the machine record's time "
