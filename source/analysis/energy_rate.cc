@@ -158,6 +158,10 @@ std::vector<double> monotone_crack(const TestRecord& rec, const std::vector<std:
     a.push_back(rec.crack_length[k]);
   }
   const std::vector<double> iso = isotonic(a);
+  // Half the window, widened by 1e-4 of itself: on a regular clock the window's edges fall on
+  // readings, and a reading on the edge must stay inside whatever the last written digit of its
+  // time (a record exported in minutes or ms reads back with round-off of ~1e-9 of the time).
+  const double half = 0.5 * time_window * (1 + 1e-4);
   const std::size_t n = rec.opening.size();
   std::vector<double> out(n);
   double running = iso.front();
@@ -169,10 +173,10 @@ std::vector<double> monotone_crack(const TestRecord& rec, const std::vector<std:
     else if (ti >= t.back())
       v = iso.back();
     else {
-      auto b = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), ti - time_window / 2) -
-                                        t.begin());
-      auto e = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), ti + time_window / 2) -
-                                        t.begin());
+      auto b =
+          static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), ti - half) - t.begin());
+      auto e =
+          static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), ti + half) - t.begin());
       // At least the readings either side (and 3 in all): the line then interpolates where the
       // readings are sparse.
       const auto at =

@@ -274,8 +274,8 @@ int cmd_reduce(const std::vector<std::string>& args) {
       "transverse-modulus", po::value<double>(),
       "E22 in MPa (with G13: |Delta| = chi h without crack readings)")(
       "root-rotation", po::value<double>(), "|Delta| of CBBM in mm (overrides the above)")(
-      "energy-crack", po::value<std::string>()->default_value("monotone"),
-      "direct energy against: monotone (smooth a(t)) or readings (as read)");
+      "energy-crack", po::value<std::string>()->default_value("readings"),
+      "direct energy against: readings (as read) or monotone (smooth a(t))");
   po::variables_map vm;
   if (!parse(args, d, "records", -1, vm))
     return 0;
@@ -293,11 +293,11 @@ int cmd_reduce(const std::vector<std::string>& args) {
   const std::string crack = vm["crack-length"].as<std::string>();
   if (crack != "auto" && crack != "measured" && crack != "equivalent")
     throw InputError("--crack-length: expected auto, measured or equivalent, got '" + crack + "'");
-  // The reader and the reduction take the same choice: `measured` makes a missing a_mm column an
-  // error, `equivalent` reduces against the compliance's equivalent crack even with readings.
-  o.read.crack_length = crack == "measured"     ? analysis::CrackLengthSource::measured
-                        : crack == "equivalent" ? analysis::CrackLengthSource::equivalent
-                                                : analysis::CrackLengthSource::automatic;
+  // `measured` makes a missing a_mm column an error; `equivalent` reduces against the
+  // compliance's equivalent crack, the readings (when the file has them) giving a0 and shown
+  // beside.
+  if (crack == "measured")
+    o.read.crack_length = analysis::CrackLengthSource::measured;
   o.reduce.use_equivalent_crack = crack == "equivalent";
   auto opt = [&](const char* key, double unit) {
     return vm.count(key) ? vm[key].as<double>() * unit : NAN;

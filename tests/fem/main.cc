@@ -1,5 +1,6 @@
-// GoogleTest main of fem_tests: initializes MPI (one process, one thread), as the fiberbridge
-// program does, because the default linear solver (Trilinos Amesos KLU on Epetra) needs it.
+// GoogleTest main of fem_tests (and tests/app's section_tests): initializes MPI (one process, one
+// thread), as the fiberbridge program does, because the default linear solver (Trilinos Amesos
+// KLU on Epetra) needs it.
 #include <deal.II/base/mpi.h>
 
 #include <gtest/gtest.h>

@@ -41,7 +41,7 @@ struct ReduceOptions {
   /// reading, as read) or "monotone" (a from isotonic regression of the readings against time,
   /// smoothed over a few reading intervals; energy_rate.h). docs/design.md section 6 says which
   /// is the default and why.
-  std::string energy_crack = "monotone";
+  std::string energy_crack = "readings";
 };
 
 /// Initiation and plateau of one method's R(a).
@@ -68,8 +68,8 @@ struct ReducedRecord {
   /// load line (a_e - |Delta|) [m], G by CBBM [J/m^2], direct energy against a_eq and its band.
   /// Empty when CBBM could not be calibrated (notes say why).
   std::vector<double> a_eq, R_CBBM, R_energy_eq, R_energy_eq_lo, R_energy_eq_hi;
-  std::vector<double> R_energy_readings; ///< direct energy against the readings as read (when
-                                         ///< energy_crack = monotone: today's estimate, beside)
+  std::vector<double> R_energy_readings; ///< direct energy against the readings as read (the
+                                         ///< default; beside when energy_crack = monotone)
   double flexural_modulus = NAN;         ///< E_f of CBBM [Pa]
   double cbbm_delta = NAN;               ///< |Delta| CBBM used [m]
   double initial_compliance = NAN;       ///< C0 [m/N]
