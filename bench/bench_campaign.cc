@@ -18,9 +18,8 @@ namespace {
 
 std::string campaign_of_120() {
   static const std::string manifest = [] {
-    const auto truth =
-        table1_truth(read_property_table(std::string(FIBERBRIDGE_BENCH_DATA) +
-                                         "/reference/seed_table1.csv"));
+    const auto truth = table1_truth(
+        read_property_table(std::string(FIBERBRIDGE_BENCH_DATA) + "/reference/seed_table1.csv"));
     SyntheticCampaignOptions so;
     so.replicates = 6; // 20 groups x 6 = 120 specimens
     const auto dir = std::filesystem::temp_directory_path() / "fiberbridge_bench_campaign";
@@ -39,10 +38,7 @@ void BM_Campaign120Specimens1000Samples(benchmark::State& state) {
   }
   state.counters["specimens"] = static_cast<double>(manifest.rows.size());
 }
-BENCHMARK(BM_Campaign120Specimens1000Samples)
-    ->Arg(1000)
-    ->Unit(benchmark::kSecond)
-    ->Iterations(1);
+BENCHMARK(BM_Campaign120Specimens1000Samples)->Arg(1000)->Unit(benchmark::kSecond)->Iterations(1);
 
 } // namespace
 

@@ -151,7 +151,8 @@ std::vector<std::string> campaign_simulation_models() {
   for (const SimulationModel* m : built_models())
     if (m->simulate)
       names.push_back(m->name);
-  std::stable_partition(names.begin(), names.end(), [](const std::string& n) { return n == "fem"; });
+  std::stable_partition(names.begin(), names.end(),
+                        [](const std::string& n) { return n == "fem"; });
   return names;
 }
 

@@ -23,50 +23,51 @@ bool fem_needs_all_ranks(dealii::ParameterHandler& prm) {
 
 } // namespace
 
-const std::vector<SimulationModel>& simulation_models() {
-  static const std::vector<SimulationModel> models = {
-      {"fem", "FEM",
+const std::vector<SimulationModel>& simulation_models(){
+    static const std::vector<SimulationModel> models = {
+        {"fem", "FEM",
 #ifdef FIBERBRIDGE_HAVE_FEM
-       true, &declare_fem_section, &check_fem_item, &run_fem_item, 10.0, true, &fem_needs_all_ranks,
+         true, &declare_fem_section, &check_fem_item, &run_fem_item, 10.0, true,
+         &fem_needs_all_ranks,
 #else
-       false, nullptr, nullptr, nullptr, 10.0, true, nullptr,
+         false, nullptr, nullptr, nullptr, 10.0, true, nullptr,
 #endif
-       "", "As Beam ladder, keys of the FEM section.", "Target error",
+         "", "As Beam ladder, keys of the FEM section.", "Target error",
 #ifdef FIBERBRIDGE_HAVE_FEM
-       &simulate_fem_law},
+         &simulate_fem_law},
 #else
-       nullptr},
+         nullptr},
 #endif
-      {"mpm", "MPM",
+        {"mpm", "MPM",
 #ifdef FIBERBRIDGE_HAVE_MPM
-       true, &declare_mpm_section, &check_mpm_item, &run_mpm_item,
+         true, &declare_mpm_section, &check_mpm_item, &run_mpm_item,
 #else
-       false, nullptr, nullptr, nullptr,
+         false, nullptr, nullptr, nullptr,
 #endif
-       100.0, false, nullptr, "", "As Beam ladder, keys of the MPM section.", "MPM target error",
+         100.0, false, nullptr, "", "As Beam ladder, keys of the MPM section.", "MPM target error",
 #ifdef FIBERBRIDGE_HAVE_MPM
-       &simulate_mpm_law},
+         &simulate_mpm_law},
 #else
-       nullptr},
+         nullptr},
 #endif
-      {"beam", "Beam",
+        {"beam", "Beam",
 #ifdef FIBERBRIDGE_HAVE_BEAM
-       true, &declare_beam_section, &check_beam_item, &run_beam_item,
+         true, &declare_beam_section, &check_beam_item, &run_beam_item,
 #else
-       false, nullptr, nullptr, nullptr,
+         false, nullptr, nullptr, nullptr,
 #endif
-       1.0, false, nullptr, "Number of elements = 50, 100, 200, 400",
-       "'Key = v1, v2, ...' (keys of the Beam section; several keys separated by ';' vary "
-       "together).",
-       "Target error",
+         1.0, false, nullptr, "Number of elements = 50, 100, 200, 400",
+         "'Key = v1, v2, ...' (keys of the Beam section; several keys separated by ';' vary "
+         "together).",
+         "Target error",
 #ifdef FIBERBRIDGE_HAVE_BEAM
-       &simulate_beam_law},
+         &simulate_beam_law},
 #else
-       nullptr},
+         nullptr},
 #endif
-  };
-  return models;
-}
+    };
+return models;
+} // namespace fiberbridge::app
 
 std::vector<const SimulationModel*> built_models() {
   std::vector<const SimulationModel*> out;

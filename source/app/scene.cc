@@ -53,7 +53,8 @@ namespace {
 
 /// Every item a scene may list, built or not.
 const std::string all_item_names =
-    "dic, reduce, identify, extract, fit, rank, bridging, campaign, " + model_names() + ", compare, study";
+    "dic, reduce, identify, extract, fit, rank, bridging, campaign, " + model_names() +
+    ", compare, study";
 
 void declare_everything(dealii::ParameterHandler& prm) {
   prm.declare_entry("Output directory", "output", dealii::Patterns::Anything(),

@@ -44,10 +44,10 @@ std::string text_report(const Json& s) {
   std::ostringstream r;
   r << "fiberbridge report: " << (s.contains("scene") ? s["scene"].get<std::string>() : "") << "\n";
   if (s.contains("dic")) // the DIC frames reduce read (dic_step.h)
-    r << "dic: " << s["dic"]["frames_used"].get<int>() << " of " << s["dic"]["frames_read"].get<int>()
-      << " frames used, final a " << num(s["dic"], "final_a_mm") << " mm, delta_root "
-      << num(s["dic"], "final_delta_root_mm") << " mm, " << s["dic"]["frame_notes"].size()
-      << " frame note(s)\n";
+    r << "dic: " << s["dic"]["frames_used"].get<int>() << " of "
+      << s["dic"]["frames_read"].get<int>() << " frames used, final a "
+      << num(s["dic"], "final_a_mm") << " mm, delta_root " << num(s["dic"], "final_delta_root_mm")
+      << " mm, " << s["dic"]["frame_notes"].size() << " frame note(s)\n";
   if (s.contains("reduce"))
     r << reduce_report(s["reduce"]);
   if (s.contains("G_ss_J_m2")) {

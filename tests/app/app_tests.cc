@@ -385,16 +385,16 @@ TEST(BadInput, RecordNotANumber) {
 TEST(AppReduce, NanOpeningRowIsADropoutNamedInTheCleaning) {
   // A NaN load or opening is a channel dropout (issue 31 item 2): the row is dropped and the
   // cleaning report says so with its line; the record still reduces.
-  const auto r = run("reduce_nan_opening", "reduce " + record("nan_opening.csv") +
-                                               " --width 25 --arm-thickness 2.7" + record_map +
-                                               " --out out");
+  const auto r =
+      run("reduce_nan_opening", "reduce " + record("nan_opening.csv") +
+                                    " --width 25 --arm-thickness 2.7" + record_map + " --out out");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = read_json(work("reduce_nan_opening") / "out" / "summary.json");
   bool named = false;
   for (const auto& c : j["reduce"]["records"][0]["cleaning"])
-    named = named || (c.get<std::string>().find("1 row(s) with an empty or NaN") !=
-                          std::string::npos &&
-                      c.get<std::string>().find("line 8") != std::string::npos);
+    named =
+        named || (c.get<std::string>().find("1 row(s) with an empty or NaN") != std::string::npos &&
+                  c.get<std::string>().find("line 8") != std::string::npos);
   EXPECT_TRUE(named) << j["reduce"]["records"][0]["cleaning"].dump();
 }
 TEST(BadInput, RecordNoCrackGrowth) {
