@@ -2,6 +2,7 @@
 // bootstrap over whole specimens that gives its intervals (campaign.h; docs/design.md section 1,
 // "Durability campaign").
 #include "fiberbridge/analysis/campaign.h"
+#include "fiberbridge/analysis/line_fit.h"
 #include "fiberbridge/analysis/trilinear_fit.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
@@ -50,16 +51,11 @@ double finite_mean(const std::vector<double>& v) {
 
 /// Linear interpolation on an increasing grid; 0 outside [x0, xn] (a law beyond its delta_c).
 double law_at(const std::vector<double>& x, const std::vector<double>& y, double t) {
+  // Outside the polyline: a law is zero beyond its delta_c; inside: the one linear interpolation
+  // (line_fit.h).
   if (x.empty() || t < x.front() || t > x.back())
     return 0;
-  const auto it = std::upper_bound(x.begin(), x.end(), t);
-  if (it == x.end())
-    return y.back();
-  const std::size_t i = static_cast<std::size_t>(it - x.begin());
-  if (i == 0)
-    return y.front();
-  const double w = (t - x[i - 1]) / (x[i] - x[i - 1]);
-  return y[i - 1] + w * (y[i] - y[i - 1]);
+  return interpolate_linear(x, y, t);
 }
 
 /// The q-quantile of the finite values (linear between order statistics, "type 7").

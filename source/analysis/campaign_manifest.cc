@@ -2,6 +2,7 @@
 #include "fiberbridge/analysis/campaign.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 
 #include <cmath>
@@ -17,10 +18,7 @@ namespace fiberbridge::analysis {
 namespace {
 
 std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string::npos)
-    return "";
-  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+  return trim_blanks(s);
 }
 
 /// An optional positive cell: NaN when empty.

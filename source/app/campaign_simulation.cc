@@ -1,5 +1,6 @@
 // The campaign's laws back in the specimen (campaign_simulation.h; the paper's Fig. 10).
 #include "fiberbridge/app/campaign_simulation.h"
+#include "fiberbridge/analysis/line_fit.h"
 
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/models.h"
@@ -31,16 +32,10 @@ std::string stem(const std::string& material, double cycles) {
 }
 
 double interpolate(const std::vector<double>& x, const std::vector<double>& y, double t) {
+  // Outside the polyline: no value; inside: the one linear interpolation (line_fit.h).
   if (x.empty() || t < x.front() || t > x.back())
     return NAN;
-  const auto it = std::upper_bound(x.begin(), x.end(), t);
-  if (it == x.end())
-    return y.back();
-  const std::size_t i = static_cast<std::size_t>(it - x.begin());
-  if (i == 0)
-    return y.front();
-  const double w = x[i] > x[i - 1] ? (t - x[i - 1]) / (x[i] - x[i - 1]) : 1.0;
-  return y[i - 1] + w * (y[i] - y[i - 1]);
+  return analysis::interpolate_linear(x, y, t);
 }
 
 result::SimulationResult run_model(SceneContext& ctx, const std::string& model,

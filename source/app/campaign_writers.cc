@@ -2,6 +2,7 @@
 // summary block, all from a finished CampaignResult. Every file goes through the atomic core
 // writers (a killed run leaves no half-written table; rank > 0 writes nothing).
 #include "fiberbridge/app/campaign_writers.h"
+#include "fiberbridge/analysis/line_fit.h"
 
 #include "fiberbridge/analysis/cohesive_export.h"
 #include "fiberbridge/core/csv.h"
@@ -315,16 +316,10 @@ void write_statistics_tables(const CampaignResult& r, const std::string& dir) {
 }
 
 double interpolate(const std::vector<double>& x, const std::vector<double>& y, double t) {
+  // Outside the polyline: no value; inside: the one linear interpolation (line_fit.h).
   if (x.empty() || t < x.front() || t > x.back())
     return NAN;
-  const auto it = std::upper_bound(x.begin(), x.end(), t);
-  if (it == x.end())
-    return y.back();
-  const std::size_t i = static_cast<std::size_t>(it - x.begin());
-  if (i == 0)
-    return y.front();
-  const double w = (t - x[i - 1]) / (x[i] - x[i - 1]);
-  return y[i - 1] + w * (y[i] - y[i - 1]);
+  return analysis::interpolate_linear(x, y, t);
 }
 
 /// Per group with a law: its law CSV (Eq. 6, dR/ddelta, trilinear, band) and the FE cards.

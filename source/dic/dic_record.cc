@@ -3,6 +3,7 @@
 
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 
 #include <algorithm>
@@ -14,10 +15,7 @@ namespace fiberbridge::dic {
 namespace {
 
 std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string::npos)
-    return "";
-  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+  return trim_blanks(s);
 }
 
 /// our name -> file header, from "ours: theirs, ..." (entries for other names are ignored).

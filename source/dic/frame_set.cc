@@ -14,10 +14,7 @@ namespace fiberbridge::dic {
 namespace {
 
 std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string::npos)
-    return "";
-  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+  return trim_blanks(s);
 }
 
 std::vector<std::string> glob_paths(const std::string& pattern) {
