@@ -114,7 +114,7 @@ identify::Identification identification_from_record(const Json& j) {
 }
 
 Fingerprint identify_inputs(SceneContext& ctx, const std::vector<analysis::TestRecord>& records) {
-  Fingerprint fp = scene_fingerprint(*ctx.prm);
+  Fingerprint fp = scene_fingerprint(ctx.parameters());
   for (std::size_t k = 0; k < records.size(); ++k) {
     const auto& r = records[k];
     std::uint64_t h = 0;

@@ -105,8 +105,18 @@ beam::BeamParameters read_beam_section(dealii::ParameterHandler& prm) {
   return parse_section<BeamSection>(prm, "Beam");
 }
 
+void parse_beam_section(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<BeamSection, beam::BeamParameters>(prm, "Beam", out);
+}
+
+namespace {
+const beam::BeamParameters& beam_parameters(const SceneContext& ctx) {
+  return ctx.parameters().section<beam::BeamParameters>("Beam");
+}
+} // namespace
+
 void check_beam_item(SceneContext& ctx) {
-  const beam::BeamParameters params = read_beam_section(*ctx.prm);
+  const beam::BeamParameters params = beam_parameters(ctx);
   ctx.law_known_before_run();
   if (ctx.specimen_from_section())
     beam::check_dcb_inputs(ctx.specimen(), ctx.material(), params);
@@ -114,12 +124,11 @@ void check_beam_item(SceneContext& ctx) {
 
 result::SimulationResult simulate_beam_law(SceneContext& ctx, const law::TractionLaw& law,
                                            double j_tip) {
-  return beam::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip,
-                            read_beam_section(*ctx.prm));
+  return beam::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip, beam_parameters(ctx));
 }
 
 void run_beam_item(SceneContext& ctx) {
-  const beam::BeamParameters params = read_beam_section(*ctx.prm);
+  const beam::BeamParameters params = beam_parameters(ctx);
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
   result::SimulationResult result =
       beam::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params, progress);

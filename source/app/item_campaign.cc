@@ -130,9 +130,12 @@ double auto_or_positive(const std::string& v, const std::string& key, double uni
   return x * unit;
 }
 
+/// The name the group defaults are kept under in the scene's parameters (parse_campaign_section).
+const std::string group_defaults_entry = "Campaign: group defaults";
+
 /// The group defaults from the Data, Fit and Bridging sections. Their section structs are local
-/// to items_analysis.cc, so the keys are read here as declared there (read only: nothing is
-/// written back into the handler).
+/// to items_analysis.cc, so the keys are read here as declared there, once, when the scene is read
+/// (read only: nothing is written back into the handler).
 analysis::CampaignOptions group_defaults(dealii::ParameterHandler& prm) {
   analysis::CampaignOptions o;
   prm.enter_subsection("Data");
@@ -178,14 +181,14 @@ struct CampaignInputs {
 
 CampaignInputs campaign_inputs(SceneContext& ctx) {
   CampaignInputs in;
-  in.section = parse_section<CampaignSection>(*ctx.prm, "Campaign");
+  in.section = ctx.parameters().section<CampaignSection>("Campaign");
   in.manifest_path = std::filesystem::path(resolve_scene_path(in.section.manifest, ctx.scene_file))
                          .lexically_normal()
                          .string();
   if (!std::filesystem::is_regular_file(in.manifest_path))
     throw InputError(ctx.scene_file + ": Campaign/Manifest: file '" + in.section.manifest +
                      "' not found");
-  in.options = group_defaults(*ctx.prm);
+  in.options = ctx.parameters().section<analysis::CampaignOptions>(group_defaults_entry);
   in.options.bootstrap_samples = in.section.bootstrap_samples;
   in.options.seed = in.section.seed;
   in.options.confidence = in.section.confidence;
@@ -193,7 +196,7 @@ CampaignInputs campaign_inputs(SceneContext& ctx) {
   in.options.outlier_mads = in.section.outlier_mads;
   // Raw records: read and reduced as `reduce` does (Test section; Specimen for the geometry,
   // which a manifest row's width_mm / arm_thickness_mm override).
-  const auto t = parse_section<TestSection>(*ctx.prm, "Test");
+  const auto& t = ctx.parameters().section<TestSection>("Test");
   in.raw.read = t.read_options(ctx.scene_file);
   const specimen::Specimen s = ctx.specimen();
   in.raw.specimen.width = s.width;
@@ -305,6 +308,17 @@ void run_groups_across_ranks(std::vector<analysis::CampaignGroup>& groups,
 
 void declare_campaign_section(dealii::ParameterHandler& prm) {
   declare_section<CampaignSection>(prm, "Campaign");
+}
+
+void parse_campaign_section(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<CampaignSection>(prm, "Campaign", out);
+  // The group defaults as read from Data, Fit and Bridging, kept apart from those sections'
+  // own parse (group_defaults validates them its own way).
+  try {
+    out.store(group_defaults_entry, group_defaults(prm));
+  } catch (...) {
+    out.store_error(group_defaults_entry, std::current_exception());
+  }
 }
 
 void check_campaign_item(SceneContext& ctx) {

@@ -47,8 +47,12 @@ void declare_compare_section(dealii::ParameterHandler& prm) {
   declare_section<CompareSection>(prm, "Compare");
 }
 
+void parse_compare_section(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<CompareSection>(prm, "Compare", out);
+}
+
 void check_compare_item(SceneContext& ctx) {
-  parse_section<CompareSection>(*ctx.prm, "Compare");
+  ctx.parameters().section<CompareSection>("Compare");
   const auto models = built_models();
   if (std::none_of(models.begin(), models.end(),
                    [&](const SimulationModel* m) { return ctx.run_items.count(m->name); }))
@@ -61,7 +65,7 @@ void run_compare_item(SceneContext& ctx) {
   if (ctx.results.empty())
     throw InputError("Run: 'compare' needs at least one simulation (" + model_names() +
                      ") in the same scene");
-  const auto o = parse_section<CompareSection>(*ctx.prm, "Compare");
+  const auto& o = ctx.parameters().section<CompareSection>("Compare");
   const bool loop = o.closed_loop;
   const int n = o.intervals;
   const int k = o.half_width;

@@ -14,12 +14,16 @@ void declare_dic_section(dealii::ParameterHandler& prm) {
   declare_section<DicSection>(prm, "DIC");
 }
 
+void parse_dic_section(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<DicSection>(prm, "DIC", out);
+}
+
 namespace {
 
 /// The DIC and Test sections as the item uses them; every file must exist.
 DicStepOptions dic_options(SceneContext& ctx) {
-  const auto d = parse_section<DicSection>(*ctx.prm, "DIC");
-  const auto t = parse_section<TestSection>(*ctx.prm, "Test");
+  const auto& d = ctx.parameters().section<DicSection>("DIC");
+  const auto& t = ctx.parameters().section<TestSection>("Test");
   DicStepOptions o;
   o.where = ctx.scene_file;
   o.dic = d.options();

@@ -30,7 +30,7 @@ namespace {
 /// The FEM section, with FEM/Mesh file resolved against the scene's folder (a scene and the
 /// specimen mesh it names travel together, as mesh/ and prm/ do).
 fem::FemParameters fem_parameters(const SceneContext& ctx) {
-  auto params = parse_section<fem::FemParameters>(*ctx.prm, "FEM");
+  auto params = ctx.parameters().section<fem::FemParameters>("FEM");
   if (!params.mesh.file.empty()) {
     const std::string path = resolve_scene_path(params.mesh.file, ctx.scene_file);
     if (!std::filesystem::is_regular_file(path))
@@ -45,6 +45,10 @@ fem::FemParameters fem_parameters(const SceneContext& ctx) {
 
 void declare_fem_section(dealii::ParameterHandler& prm) {
   declare_section<fem::FemParameters>(prm, "FEM");
+}
+
+void parse_fem_section(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<fem::FemParameters>(prm, "FEM", out);
 }
 
 void check_fem_item(SceneContext& ctx) {

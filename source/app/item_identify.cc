@@ -97,6 +97,10 @@ void declare_identify_section(dealii::ParameterHandler& prm) {
   declare_section<IdentifySection>(prm, "Identify");
 }
 
+void parse_identify_section(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<IdentifySection>(prm, "Identify", out);
+}
+
 namespace {
 
 /// A record name as a gnuplot title (enhanced text would turn '_' into a subscript).
@@ -110,7 +114,7 @@ std::string title_of(std::string name) {
 /// fits them).
 const std::vector<analysis::TestRecord>& scene_records(SceneContext& ctx) {
   if (!ctx.records) {
-    const auto test = parse_section<TestSection>(*ctx.prm, "Test");
+    const auto& test = ctx.parameters().section<TestSection>("Test");
     const analysis::RecordReadOptions read = test.read_options(ctx.scene_file);
     auto records = std::make_shared<std::vector<analysis::TestRecord>>();
     for (const auto& path : test.resolved_files(ctx.scene_file))
@@ -324,7 +328,7 @@ run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
 } // namespace
 
 void check_identify_item(SceneContext& ctx) {
-  parse_section<IdentifySection>(*ctx.prm, "Identify");
+  ctx.parameters().section<IdentifySection>("Identify");
   // The records are small: reading them is the check of Test. When reduce runs, it reads them
   // (its check has the Test section) and hands them on.
   if (!ctx.run_items.count("reduce"))
@@ -333,7 +337,7 @@ void check_identify_item(SceneContext& ctx) {
 }
 
 void run_identify_item(SceneContext& ctx) {
-  const auto section = parse_section<IdentifySection>(*ctx.prm, "Identify");
+  const auto& section = ctx.parameters().section<IdentifySection>("Identify");
   const identify::IdentifySettings& settings = section;
   const bool per_record = section.per_record;
   const auto& records = scene_records(ctx);
@@ -391,7 +395,7 @@ void check_identified_against_simulations(SceneContext& ctx) {
   // misfit of the simulated P(opening) against the measured one (large displacements mapped as in
   // identify).
   const auto& rec = ctx.identification->records.front();
-  const bool large = parse_section<IdentifySection>(*ctx.prm, "Identify").large_displacement;
+  const bool large = ctx.parameters().section<IdentifySection>("Identify").large_displacement;
   Json block = Json::object();
   std::string plot = "plot 'identify_fit_0.csv' using 1:2 with points pt 7 ps 0.4 title '" +
                      title_of(rec.name) + " measured'";

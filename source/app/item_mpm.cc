@@ -158,8 +158,18 @@ mpm::MpmParameters read_mpm_section(dealii::ParameterHandler& prm) {
   return parse_section<MpmSection>(prm, "MPM");
 }
 
+void parse_mpm_section(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<MpmSection, mpm::MpmParameters>(prm, "MPM", out);
+}
+
+namespace {
+const mpm::MpmParameters& mpm_parameters(const SceneContext& ctx) {
+  return ctx.parameters().section<mpm::MpmParameters>("MPM");
+}
+} // namespace
+
 void check_mpm_item(SceneContext& ctx) {
-  const mpm::MpmParameters params = read_mpm_section(*ctx.prm);
+  const mpm::MpmParameters params = mpm_parameters(ctx);
   const law::TractionLaw* law = ctx.law_known_before_run();
   if (ctx.specimen_from_section())
     mpm::check_dcb_inputs(ctx.specimen(), ctx.material(), params, law);
@@ -167,13 +177,13 @@ void check_mpm_item(SceneContext& ctx) {
 
 result::SimulationResult simulate_mpm_law(SceneContext& ctx, const law::TractionLaw& law,
                                           double j_tip) {
-  mpm::MpmParameters params = read_mpm_section(*ctx.prm);
+  mpm::MpmParameters params = mpm_parameters(ctx);
   params.resume = false;
   return mpm::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip, params, "", {});
 }
 
 void run_mpm_item(SceneContext& ctx) {
-  mpm::MpmParameters params = read_mpm_section(*ctx.prm);
+  mpm::MpmParameters params = mpm_parameters(ctx);
   params.resume = ctx.resume;
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
   result::SimulationResult result = mpm::simulate_dcb(

@@ -15,11 +15,15 @@ void declare_test_section(dealii::ParameterHandler& prm) {
   declare_section<TestSection>(prm, "Test");
 }
 
+void parse_test_section(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<TestSection>(prm, "Test", out);
+}
+
 namespace {
 
 /// The Test section and the Specimen, as `reduce` uses them; every listed record must exist.
 ReduceStepOptions reduce_options(SceneContext& ctx) {
-  const auto t = parse_section<TestSection>(*ctx.prm, "Test");
+  const auto& t = ctx.parameters().section<TestSection>("Test");
   ReduceStepOptions o;
   o.where = ctx.scene_file + ": Specimen";
   const specimen::Specimen s = ctx.specimen();
@@ -75,9 +79,8 @@ void run_reduce_item(SceneContext& ctx) {
   if (all_root) {
     ctx.rdelta_root = std::make_shared<const analysis::RDeltaData>(
         analysis::to_rdelta(r->reduced, ctx.out("rdelta_test.csv")));
-    ctx.prm->enter_subsection("Data");
-    const bool data_file_given = !ctx.prm->get("File").empty();
-    ctx.prm->leave_subsection();
+    // The key as set: reduce does not validate the Data section (extract does, when it runs).
+    const bool data_file_given = !ctx.parameters().entry("Data/File").empty();
     if (!data_file_given)
       ctx.summary["reduce"]["notes"].push_back("extract and fit use the records' R(delta_root) "
                                                "(rdelta_test.csv): Data/File names no file");

@@ -31,13 +31,10 @@ namespace {
 
 /// The scene's parameters with a run's settings "Section/Key=value" applied to a copy: the
 /// scene's own parameters stay as they are (the later items and the other runs read them).
-std::shared_ptr<dealii::ParameterHandler> with_settings(const SceneContext& ctx,
-                                                        const std::vector<std::string>& sets,
-                                                        const std::string& where) {
-  auto prm = copy_scene_parameters(ctx);
-  for (const auto& s : sets)
-    apply_setting(*prm, s, where);
-  return prm;
+std::shared_ptr<const SceneParameters> with_settings(const SceneContext& ctx,
+                                                     const std::vector<std::string>& sets,
+                                                     const std::string& where) {
+  return scene_parameters_with(ctx.parameters(), sets, where);
 }
 
 const SceneItem* find_item(const std::string& name) {
@@ -307,8 +304,12 @@ void declare_study_section(dealii::ParameterHandler& prm) {
   declare_section<StudySection>(prm, "Study");
 }
 
+void parse_study_section(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<StudySection>(prm, "Study", out);
+}
+
 void check_study_item(SceneContext& ctx) {
-  const auto plan = parse_section<StudySection>(*ctx.prm, "Study");
+  const auto& plan = ctx.parameters().section<StudySection>("Study");
   // Every ladder level is the model's section with the level's keys: check each as the model's
   // item would (a misspelt key or a bad value fails now, not after the coarser levels ran). The
   // stability cases' failures are outcomes of the study, not input errors.
@@ -326,7 +327,7 @@ void check_study_item(SceneContext& ctx) {
 }
 
 void run_study_item(SceneContext& ctx) {
-  const auto plan = parse_section<StudySection>(*ctx.prm, "Study");
+  const auto& plan = ctx.parameters().section<StudySection>("Study");
   const auto& ladders = plan.ladders;
   const auto& stability_models = plan.stability_models;
   const auto& cases = plan.cases;

@@ -162,7 +162,7 @@ constexpr std::size_t min_rows_per_replicate = 8;
 /// R(delta_root) itself. With no Data/File, the data are reduce's R(delta_root) (in memory, named
 /// by the rdelta_test.csv reduce also writes).
 ExtractionOptions data_options(SceneContext& ctx, bool file_may_come_later) {
-  ExtractionOptions o = parse_section<DataSection>(*ctx.prm, "Data");
+  ExtractionOptions o = ctx.parameters().section<ExtractionOptions>("Data");
   if (!o.data_file.empty())
     o.data_file = existing_scene_file(o.data_file, "Data/File", ctx);
   else if (ctx.rdelta_root) {
@@ -183,7 +183,7 @@ ExtractionOptions data_options(SceneContext& ctx, bool file_may_come_later) {
 }
 
 RankOptions rank_options(SceneContext& ctx) {
-  RankOptions o = parse_section<RankSection>(*ctx.prm, "Rank");
+  RankOptions o = ctx.parameters().section<RankOptions>("Rank");
   o.table_file = existing_scene_file(o.table_file, "Rank/Table file", ctx);
   return o;
 }
@@ -206,6 +206,22 @@ void declare_bridging_section(dealii::ParameterHandler& prm) {
   declare_section<BridgingSection>(prm, "Bridging");
 }
 
+void parse_data_section(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<DataSection, ExtractionOptions>(prm, "Data", out);
+}
+
+void parse_fit_section(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<FitSection, FitOptions>(prm, "Fit", out);
+}
+
+void parse_rank_section(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<RankSection, RankOptions>(prm, "Rank", out);
+}
+
+void parse_bridging_section(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<BridgingSection>(prm, "Bridging", out);
+}
+
 void check_extract_item(SceneContext& ctx) {
   data_options(ctx, ctx.run_items.count("reduce") > 0);
 }
@@ -223,13 +239,13 @@ void run_extract_item(SceneContext& ctx) {
 
 void check_fit_item(SceneContext& ctx) {
   check_extract_item(ctx); // fit implies extract
-  parse_section<FitSection>(*ctx.prm, "Fit");
+  ctx.parameters().section<FitOptions>("Fit");
 }
 
 void run_fit_item(SceneContext& ctx) {
   if (!ctx.extraction)
     run_extract_item(ctx); // fit works on the extracted law: it implies extract
-  const FitOptions o = parse_section<FitSection>(*ctx.prm, "Fit");
+  const FitOptions& o = ctx.parameters().section<FitOptions>("Fit");
   const auto fit = run_trilinear_fit(*ctx.extraction, o, ctx.output_dir, ctx.summary);
   // The extracted law is handed to the simulations without being retyped
   // (docs/design.md section 5).
@@ -247,12 +263,12 @@ void run_rank_item(SceneContext& ctx) {
 }
 
 void check_bridging_item(SceneContext& ctx) {
-  if (parse_section<BridgingSection>(*ctx.prm, "Bridging").stress == 0)
+  if (ctx.parameters().section<BridgingSection>("Bridging").stress == 0)
     ctx.law_known_before_run();
 }
 
 void run_bridging_item(SceneContext& ctx) {
-  const auto in = parse_section<BridgingSection>(*ctx.prm, "Bridging");
+  const auto& in = ctx.parameters().section<BridgingSection>("Bridging");
   const analysis::BridgingFiber& f = in.fiber;
   const double l_b = in.zone_length, delta = in.opening;
   double sigma = in.stress;

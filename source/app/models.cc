@@ -2,8 +2,9 @@
 #include "fiberbridge/app/models.h"
 
 #include "fiberbridge/app/items.h"
-
-#include <deal.II/base/parameter_handler.h>
+#ifdef FIBERBRIDGE_HAVE_FEM
+#include "fiberbridge/fem/dcb_simulation.h"
+#endif
 
 #include <algorithm>
 
@@ -13,11 +14,10 @@ namespace {
 
 #ifdef FIBERBRIDGE_HAVE_FEM
 /// A FEM that is one big run over all ranks by request: 3D, or the distributed engine chosen.
-bool fem_needs_all_ranks(dealii::ParameterHandler& prm) {
-  prm.enter_subsection("FEM");
-  const bool all = prm.get_integer("Dimension") == 3 || prm.get("Engine") == "distributed";
-  prm.leave_subsection();
-  return all;
+bool fem_needs_all_ranks(const SceneParameters& p) {
+  // FEM/Engine is deprecated and kept only in the parse's notes: its value as set.
+  return p.section<fem::FemParameters>("FEM").mesh.dimension == 3 ||
+         p.entry("FEM/Engine") == "distributed";
 }
 #endif
 
@@ -27,10 +27,10 @@ const std::vector<SimulationModel>& simulation_models(){
     static const std::vector<SimulationModel> models = {
         {"fem", "FEM",
 #ifdef FIBERBRIDGE_HAVE_FEM
-         true, &declare_fem_section, &check_fem_item, &run_fem_item, 10.0, true,
+         true, &declare_fem_section, &parse_fem_section, &check_fem_item, &run_fem_item, 10.0, true,
          &fem_needs_all_ranks,
 #else
-         false, nullptr, nullptr, nullptr, 10.0, true, nullptr,
+         false, nullptr, nullptr, nullptr, nullptr, 10.0, true, nullptr,
 #endif
          "", "As Beam ladder, keys of the FEM section.", "Target error",
 #ifdef FIBERBRIDGE_HAVE_FEM
@@ -40,9 +40,9 @@ const std::vector<SimulationModel>& simulation_models(){
 #endif
         {"mpm", "MPM",
 #ifdef FIBERBRIDGE_HAVE_MPM
-         true, &declare_mpm_section, &check_mpm_item, &run_mpm_item,
+         true, &declare_mpm_section, &parse_mpm_section, &check_mpm_item, &run_mpm_item,
 #else
-         false, nullptr, nullptr, nullptr,
+         false, nullptr, nullptr, nullptr, nullptr,
 #endif
          100.0, false, nullptr, "", "As Beam ladder, keys of the MPM section.", "MPM target error",
 #ifdef FIBERBRIDGE_HAVE_MPM
@@ -52,9 +52,9 @@ const std::vector<SimulationModel>& simulation_models(){
 #endif
         {"beam", "Beam",
 #ifdef FIBERBRIDGE_HAVE_BEAM
-         true, &declare_beam_section, &check_beam_item, &run_beam_item,
+         true, &declare_beam_section, &parse_beam_section, &check_beam_item, &run_beam_item,
 #else
-         false, nullptr, nullptr, nullptr,
+         false, nullptr, nullptr, nullptr, nullptr,
 #endif
          1.0, false, nullptr, "Number of elements = 50, 100, 200, 400",
          "'Key = v1, v2, ...' (keys of the Beam section; several keys separated by ';' vary "

@@ -9,8 +9,6 @@
 #include "fiberbridge/core/output_guard.h"
 #include "fiberbridge/law/law_fingerprint.h"
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -30,13 +28,6 @@ constexpr int record_version = 1;
 const std::set<std::string> run_control = {"Output directory", "Run", "MPM/Threads",
                                            "MPM/Checkpoint interval"};
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string::npos)
-    return "";
-  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
-}
-
 std::string record_path(const std::string& output_dir, std::string unit) {
   for (auto& c : unit)
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.'))
@@ -46,37 +37,16 @@ std::string record_path(const std::string& output_dir, std::string unit) {
 
 } // namespace
 
-Fingerprint scene_fingerprint(dealii::ParameterHandler& prm) {
-  // The parameters as deal.II prints them ("subsection S", "set Key = value", "end"): the one
-  // complete listing ParameterHandler offers.
-  std::ostringstream text;
-  prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
+Fingerprint scene_fingerprint(const SceneParameters& parameters) {
   Fingerprint fp;
-  std::vector<std::string> path;
-  std::istringstream in(text.str());
-  for (std::string line; std::getline(in, line);) {
-    line = trim(line);
-    if (line.rfind("subsection ", 0) == 0)
-      path.push_back(trim(line.substr(11)));
-    else if (line == "end" && !path.empty())
-      path.pop_back();
-    else if (line.rfind("set ", 0) == 0) {
-      const auto eq = line.find('=');
-      if (eq == std::string::npos)
-        continue;
-      std::string key;
-      for (const auto& p : path)
-        key += p + "/";
-      key += trim(line.substr(4, eq - 4));
-      if (!run_control.count(key))
-        fp.emplace_back(key, trim(line.substr(eq + 1)));
-    }
-  }
+  for (const auto& [key, value] : parameters.entries)
+    if (!run_control.count(key))
+      fp.emplace_back(key, value);
   return fp;
 }
 
 Fingerprint simulation_fingerprint(SceneContext& ctx) {
-  Fingerprint fp = scene_fingerprint(*ctx.prm);
+  Fingerprint fp = scene_fingerprint(ctx.parameters());
   // What earlier items hand on. A scene whose own law or specimen is unusable may still run a
   // study of cases that override them: the fingerprint then records the reason.
   auto add = [&](const std::string& key, const std::function<std::string()>& value) {

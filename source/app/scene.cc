@@ -5,9 +5,11 @@
 #include "fiberbridge/app/models.h"
 #include "fiberbridge/app/resume_store.h"
 #include "fiberbridge/app/scene_context.h"
+#include "fiberbridge/app/scene_parameters.h"
 #include "fiberbridge/app/simulation_tasks.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/output_guard.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -26,24 +28,30 @@ const std::vector<SceneItem>& scene_items() {
   // (models.h, cheapest first), then the items that compare them.
   static const std::vector<SceneItem> items = [] {
     std::vector<SceneItem> v = {
-        {"dic", &declare_dic_section, &check_dic_item, &run_dic_item},
-        {"reduce", &declare_test_section, &check_reduce_item, &run_reduce_item},
+        {"dic", &declare_dic_section, &parse_dic_section, &check_dic_item, &run_dic_item},
+        {"reduce", &declare_test_section, &parse_test_section, &check_reduce_item,
+         &run_reduce_item},
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
-        {"identify", &declare_identify_section, &check_identify_item, &run_identify_item},
+        {"identify", &declare_identify_section, &parse_identify_section, &check_identify_item,
+         &run_identify_item},
 #endif
-        {"extract", &declare_data_section, &check_extract_item, &run_extract_item},
-        {"fit", &declare_fit_section, &check_fit_item, &run_fit_item},
-        {"rank", &declare_rank_section, &check_rank_item, &run_rank_item},
-        {"bridging", &declare_bridging_section, &check_bridging_item, &run_bridging_item},
-        {"campaign", &declare_campaign_section, &check_campaign_item, &run_campaign_item},
+        {"extract", &declare_data_section, &parse_data_section, &check_extract_item,
+         &run_extract_item},
+        {"fit", &declare_fit_section, &parse_fit_section, &check_fit_item, &run_fit_item},
+        {"rank", &declare_rank_section, &parse_rank_section, &check_rank_item, &run_rank_item},
+        {"bridging", &declare_bridging_section, &parse_bridging_section, &check_bridging_item,
+         &run_bridging_item},
+        {"campaign", &declare_campaign_section, &parse_campaign_section, &check_campaign_item,
+         &run_campaign_item},
     };
     for (const SimulationModel* m : built_models())
       v.push_back(m->item());
-    v.insert(v.end(),
-             {
-                 {"compare", &declare_compare_section, &check_compare_item, &run_compare_item},
-                 {"study", &declare_study_section, &check_study_item, &run_study_item},
-             });
+    v.insert(v.end(), {
+                          {"compare", &declare_compare_section, &parse_compare_section,
+                           &check_compare_item, &run_compare_item},
+                          {"study", &declare_study_section, &parse_study_section, &check_study_item,
+                           &run_study_item},
+                      });
     return v;
   }();
   return items;
@@ -111,14 +119,77 @@ void apply_setting(dealii::ParameterHandler& prm, const std::string& setting,
     prm.leave_subsection();
 }
 
-std::shared_ptr<dealii::ParameterHandler> copy_scene_parameters(const SceneContext& ctx) {
+namespace {
+
+/// "Section/Key" -> value of every entry, in the order of deal.II's ShortPRM listing
+/// ("subsection S", "set Key = value", "end"): the one complete listing ParameterHandler offers.
+std::vector<std::pair<std::string, std::string>> listed_entries(const std::string& listing) {
+  std::vector<std::pair<std::string, std::string>> out;
+  std::vector<std::string> path;
+  std::istringstream in(listing);
+  for (std::string line; std::getline(in, line);) {
+    line = trim_blanks(line);
+    if (line.rfind("subsection ", 0) == 0)
+      path.push_back(trim_blanks(line.substr(11)));
+    else if (line == "end" && !path.empty())
+      path.pop_back();
+    else if (line.rfind("set ", 0) == 0) {
+      const auto eq = line.find('=');
+      if (eq == std::string::npos)
+        continue;
+      std::string key;
+      for (const auto& p : path)
+        key += p + "/";
+      key += trim_blanks(line.substr(4, eq - 4));
+      out.emplace_back(key, trim_blanks(line.substr(eq + 1)));
+    }
+  }
+  return out;
+}
+
+/// Every section of the scene read in `prm` parsed once into its struct (each item's parse, the
+/// shared sections); the handler is not used after this.
+std::shared_ptr<const SceneParameters> parse_scene(dealii::ParameterHandler& prm,
+                                                   const std::string& prm_file,
+                                                   const std::vector<std::string>& overrides,
+                                                   std::vector<std::string> run) {
+  auto p = std::make_shared<SceneParameters>();
+  p->scene_file = prm_file;
+  p->overrides = overrides;
+  p->run = std::move(run);
+  p->output_directory = prm.get("Output directory");
+  std::ostringstream listing;
+  prm.print_parameters(listing, dealii::ParameterHandler::ShortPRM);
+  p->listing = listing.str();
+  p->entries = listed_entries(p->listing);
+  parse_shared_sections(prm, *p);
+  for (const auto& item : scene_items())
+    if (item.parse)
+      item.parse(prm, *p);
+  return p;
+}
+
+} // namespace
+
+std::shared_ptr<const SceneParameters>
+read_scene_parameters(const std::string& prm_file, const std::vector<std::string>& overrides) {
+  dealii::ParameterHandler prm;
+  auto run = read_scene(prm, prm_file, overrides);
+  return parse_scene(prm, prm_file, overrides, std::move(run));
+}
+
+std::shared_ptr<const SceneParameters>
+scene_parameters_with(const SceneParameters& scene, const std::vector<std::string>& settings,
+                      const std::string& where) {
   // ParameterHandler cannot be copied, and its JSON and XML listings do not read back in deal.II
   // 9.4 (mangled entry names): the copy reads the scene as the runner did, the file and then
-  // --set. Nothing writes into the scene's parameters after that (docs/design.md section 4), so
-  // the copy holds the same values.
-  auto copy = std::make_shared<dealii::ParameterHandler>();
-  read_scene(*copy, ctx.scene_file, ctx.overrides);
-  return copy;
+  // --set, then the settings. Nothing wrote into the scene's parameters after that
+  // (docs/design.md section 4), so the copy holds the same values but for the settings.
+  dealii::ParameterHandler prm;
+  auto run = read_scene(prm, scene.scene_file, scene.overrides);
+  for (const auto& s : settings)
+    apply_setting(prm, s, where);
+  return parse_scene(prm, scene.scene_file, scene.overrides, std::move(run));
 }
 
 namespace {
@@ -214,19 +285,16 @@ void check_scene(SceneContext& ctx) {
 std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides,
                       bool resume) {
   const auto t0 = std::chrono::steady_clock::now();
-  dealii::ParameterHandler prm;
-  const auto wanted = read_scene(prm, prm_file, overrides);
-  std::set<std::string> wanted_set(wanted.begin(), wanted.end());
-
   SceneContext ctx;
-  ctx.prm = &prm;
+  ctx.params = read_scene_parameters(prm_file, overrides);
+  const auto& wanted = ctx.parameters().run;
+  std::set<std::string> wanted_set(wanted.begin(), wanted.end());
   ctx.scene_file = prm_file;
-  ctx.overrides = overrides;
   ctx.run_items = wanted_set;
   // Every section the run will use is read and validated before anything is written: a bad value
   // in the section of the last item must not surface after the first item's minutes of work.
   check_scene(ctx);
-  ctx.output_dir = prm.get("Output directory");
+  ctx.output_dir = ctx.parameters().output_directory;
   // Under mpirun only rank 0 writes (core/output_guard.h); the others must not remove the
   // summary rank 0 is about to write either.
   const bool writer = output_enabled();
@@ -259,9 +327,7 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
   }
   ctx.summary["wall_time_s"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::ostringstream used;
-  prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
-  write_file_atomically(ctx.out("parameters_used.prm"), used.str());
+  write_file_atomically(ctx.out("parameters_used.prm"), ctx.parameters().listing);
   const std::string report = text_report(ctx.summary);
   write_file_atomically(ctx.out("report.txt"), report);
   write_run_summary(ctx.output_dir, ctx.summary);

@@ -1,8 +1,6 @@
 #include "fiberbridge/app/scene_context.h"
 
 #include "fiberbridge/app/scene.h"
-#include "fiberbridge/app/section.h"
-#include "fiberbridge/app/shared_sections.h"
 #include "fiberbridge/law/law_spec.h"
 
 namespace fiberbridge::app {
@@ -33,7 +31,7 @@ const CrackLaw& SceneContext::crack_law() {
   if (handed_law)
     return *handed_law;
   if (!section_law_) {
-    auto spec = parse_section<LawSection>(*prm, "Cohesive law");
+    auto spec = parameters().law();
     if (!spec.table_file.empty())
       spec.table_file = resolve_scene_path(spec.table_file, scene_file);
     section_law_ = CrackLaw{law::make_law(spec), spec.j_tip, LawSource::section};
@@ -44,24 +42,20 @@ const CrackLaw& SceneContext::crack_law() {
 SpecimenSetup SceneContext::specimen_setup() const {
   if (handed_specimen)
     return *handed_specimen;
-  return {parse_section<SpecimenSection>(*prm, "Specimen"),
-          parse_section<MaterialSection>(*prm, "Material"), SpecimenSource::section};
+  return {parameters().specimen(), parameters().material(), SpecimenSource::section};
 }
 
 SceneContext SceneContext::derived(const std::string& dir, HandOn what,
-                                   std::shared_ptr<dealii::ParameterHandler> parameters) const {
+                                   std::shared_ptr<const SceneParameters> parameters) const {
   SceneContext sub;
-  if (parameters) {
-    sub.own_prm = std::move(parameters);
-    sub.prm = sub.own_prm.get();
-  } else {
-    sub.own_prm = own_prm;
-    sub.prm = prm;
+  if (parameters)
+    sub.params = std::move(parameters);
+  else {
+    sub.params = params;
     sub.section_law_ = section_law_; // the same sections: the law built from them holds
   }
   sub.output_dir = dir;
   sub.scene_file = scene_file;
-  sub.overrides = overrides;
   sub.resume = resume;
   sub.run_items = run_items;
   if (what == HandOn::everything) {

@@ -105,4 +105,10 @@ void declare_specimen_sections(dealii::ParameterHandler& prm) {
   declare_section<MaterialSection>(prm, "Material");
 }
 
+void parse_shared_sections(dealii::ParameterHandler& prm, SceneParameters& out) {
+  parse_into<LawSection, law::LawSpec>(prm, "Cohesive law", out);
+  parse_into<SpecimenSection, specimen::Specimen>(prm, "Specimen", out);
+  parse_into<MaterialSection, specimen::Material>(prm, "Material", out);
+}
+
 } // namespace fiberbridge::app

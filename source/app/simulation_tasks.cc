@@ -26,7 +26,8 @@ Json run_simulations(SceneContext& ctx, const std::set<std::string>& wanted, MPI
   std::vector<const SceneItem*> sims;
   for (const auto& item : scene_items())
     if (const SimulationModel* m = built_model(item.name);
-        m && wanted.count(item.name) && !(m->needs_all_ranks && m->needs_all_ranks(*ctx.prm)))
+        m && wanted.count(item.name) &&
+        !(m->needs_all_ranks && m->needs_all_ranks(ctx.parameters())))
       sims.push_back(&item);
   int n_ranks = 1;
   MPI_Comm_size(comm, &n_ranks);

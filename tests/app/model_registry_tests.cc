@@ -78,11 +78,9 @@ TEST(ModelRegistry, EveryBuiltModelRunsThroughTheSameInterface) {
     if (quick.count(m->name))
       for (const auto& s : quick.at(m->name))
         sets.push_back(s);
-    dealii::ParameterHandler prm;
-    const auto run = app::read_scene(prm, small_scene(dir), sets);
-    ASSERT_EQ(run, std::vector<std::string>{m->name});
     app::SceneContext ctx;
-    ctx.prm = &prm;
+    ctx.params = app::read_scene_parameters(small_scene(dir), sets);
+    ASSERT_EQ(ctx.parameters().run, std::vector<std::string>{m->name});
     ctx.scene_file = dir + "/scene.prm";
     ctx.run_items = {m->name};
     ctx.output_dir = dir + "/out";

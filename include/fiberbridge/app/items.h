@@ -18,6 +18,20 @@ void declare_rank_section(dealii::ParameterHandler& prm);
 void declare_bridging_section(dealii::ParameterHandler& prm);
 void declare_law_section(dealii::ParameterHandler& prm);
 void declare_specimen_sections(dealii::ParameterHandler& prm);
+/// Cohesive law, Specimen and Material parsed into the scene's parameters (SceneParameters::law,
+/// specimen, material).
+void parse_shared_sections(dealii::ParameterHandler& prm, SceneParameters& out);
+
+// parse_*: the item's sections parsed once when the scene is read (SceneItem::parse).
+void parse_data_section(dealii::ParameterHandler& prm, SceneParameters& out);
+void parse_fit_section(dealii::ParameterHandler& prm, SceneParameters& out);
+void parse_rank_section(dealii::ParameterHandler& prm, SceneParameters& out);
+void parse_bridging_section(dealii::ParameterHandler& prm, SceneParameters& out);
+void parse_campaign_section(dealii::ParameterHandler& prm, SceneParameters& out);
+void parse_compare_section(dealii::ParameterHandler& prm, SceneParameters& out);
+void parse_study_section(dealii::ParameterHandler& prm, SceneParameters& out);
+void parse_dic_section(dealii::ParameterHandler& prm, SceneParameters& out);
+void parse_test_section(dealii::ParameterHandler& prm, SceneParameters& out);
 
 // check_*: the item's sections read and validated before the first item runs (SceneItem::check).
 void check_extract_item(SceneContext& ctx);
@@ -46,6 +60,7 @@ void run_reduce_item(SceneContext& ctx);
 
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
 void declare_identify_section(dealii::ParameterHandler& prm);
+void parse_identify_section(dealii::ParameterHandler& prm, SceneParameters& out);
 void check_identify_item(SceneContext& ctx);
 void run_identify_item(SceneContext& ctx);
 /// For compare: the identified law's simulations against the first record (identify_check).
@@ -56,6 +71,7 @@ void report_law_routes(SceneContext& ctx);
 #endif
 #ifdef FIBERBRIDGE_HAVE_BEAM
 void declare_beam_section(dealii::ParameterHandler& prm);
+void parse_beam_section(dealii::ParameterHandler& prm, SceneParameters& out);
 /// The Beam section read and validated, with the notes on deprecated keys it met (the item reads it
 /// so; tests/app/section_tests.cc).
 beam::BeamParameters read_beam_section(dealii::ParameterHandler& prm);
@@ -67,6 +83,7 @@ result::SimulationResult simulate_beam_law(SceneContext& ctx, const law::Tractio
 #endif
 #ifdef FIBERBRIDGE_HAVE_FEM
 void declare_fem_section(dealii::ParameterHandler& prm);
+void parse_fem_section(dealii::ParameterHandler& prm, SceneParameters& out);
 void check_fem_item(SceneContext& ctx);
 void run_fem_item(SceneContext& ctx);
 /// The FEM with this law and J_tip on ctx's specimen set-up and FEM section, on this rank alone
@@ -76,6 +93,7 @@ result::SimulationResult simulate_fem_law(SceneContext& ctx, const law::Traction
 #endif
 #ifdef FIBERBRIDGE_HAVE_MPM
 void declare_mpm_section(dealii::ParameterHandler& prm);
+void parse_mpm_section(dealii::ParameterHandler& prm, SceneParameters& out);
 /// The MPM section read and validated, with the notes on deprecated keys it met.
 mpm::MpmParameters read_mpm_section(dealii::ParameterHandler& prm);
 void check_mpm_item(SceneContext& ctx);

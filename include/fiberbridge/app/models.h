@@ -16,6 +16,8 @@ struct SimulationModel {
   const char* section; ///< its prm section; the Study's "<section> ladder" varies its keys
   bool built;          ///< compiled into this build (FIBERBRIDGE_MODELS); else only named
   void (*declare)(dealii::ParameterHandler&); ///< nullptr when not built
+  /// Its section parsed into the scene's parameters when the scene is read (SceneItem::parse).
+  void (*parse)(dealii::ParameterHandler&, SceneParameters&);
   void (*check)(SceneContext&);
   void (*run)(SceneContext&);
   /// Relative cost on the seed specimen (the beam ~0.2 s, the 2D FEM a few s, the MPM minutes,
@@ -27,7 +29,7 @@ struct SimulationModel {
   bool uses_all_ranks;
   /// Whether this scene's run of the model must have every rank even beside other models (the
   /// FEM in 3D or on the distributed engine by request); nullptr = never.
-  bool (*needs_all_ranks)(dealii::ParameterHandler&);
+  bool (*needs_all_ranks)(const SceneParameters&);
   const char* ladder_default; ///< Study/<section> ladder: its default and its documentation
   const char* ladder_doc;
   /// The Study key of the error a ladder level must reach ("Target error").
@@ -37,7 +39,7 @@ struct SimulationModel {
   /// many laws back in the specimen (the campaign's Fig. 10). nullptr when not built.
   result::SimulationResult (*simulate)(SceneContext&, const law::TractionLaw&, double j_tip);
 
-  SceneItem item() const { return {name, declare, check, run}; }
+  SceneItem item() const { return {name, declare, parse, check, run}; }
 };
 
 /// Every model the project knows, built or not, in the order they joined the project (the order

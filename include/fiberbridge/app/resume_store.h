@@ -22,7 +22,7 @@ using Fingerprint = std::vector<std::pair<std::string, std::string>>;
 /// Every entry of the scene's parameters as it stands (the file, --set, and overrides a study
 /// has in force), "Section/Key" -> value, without the run-control entries that do not change a
 /// result (Output directory, MPM/Threads, MPM/Checkpoint interval).
-Fingerprint scene_fingerprint(dealii::ParameterHandler& prm);
+Fingerprint scene_fingerprint(const SceneParameters& parameters);
 
 /// scene_fingerprint plus what a simulation takes from earlier items: the law (law_fingerprint)
 /// and J_tip, the specimen and the material in effect (identify and fit set them).

@@ -14,9 +14,17 @@ class ParameterHandler;
 namespace fiberbridge::app {
 
 /// Declares every section in `prm`, parses `prm_file` (unknown entries are errors), applies the
-/// --set overrides and checks the Run list; returns the items to run. Throws InputError.
+/// --set overrides and checks the Run list; returns the items to run. Throws InputError. (The
+/// handler-level step of read_scene_parameters, for tests that look at the handler itself.)
 std::vector<std::string> read_scene(dealii::ParameterHandler& prm, const std::string& prm_file,
                                     const std::vector<std::string>& overrides);
+
+class SceneParameters;
+/// The scene read as read_scene does, then every section parsed once into its typed struct
+/// (scene_parameters.h); the handler ends here. Throws InputError for the file, --set and Run;
+/// a section's own error is kept and thrown where an item reads it.
+std::shared_ptr<const SceneParameters>
+read_scene_parameters(const std::string& prm_file, const std::vector<std::string>& overrides);
 
 /// Runs the scene; returns the output directory. Throws InputError/ComputationError. With
 /// `resume`, work an earlier run into the same output directory finished is restored and
@@ -30,11 +38,13 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
 void apply_setting(dealii::ParameterHandler& prm, const std::string& setting,
                    const std::string& where);
 
-struct SceneContext;
-/// A copy of the scene's parameters (ctx.scene_file read again with ctx.overrides), for runs that
-/// apply their own overrides without touching the scene's (a study's ladder levels and stability
-/// cases).
-std::shared_ptr<dealii::ParameterHandler> copy_scene_parameters(const SceneContext& ctx);
+/// The scene's parameters with `settings` ("Section/Key=value", apply_setting with `where`) on
+/// top, parsed anew: the scene file read again with its --set settings, then these (deal.II 9.4
+/// cannot copy a ParameterHandler). For runs that apply their own overrides without touching the
+/// scene's (a study's ladder levels and stability cases).
+std::shared_ptr<const SceneParameters>
+scene_parameters_with(const SceneParameters& scene, const std::vector<std::string>& settings,
+                      const std::string& where);
 
 /// The items of a list as a scene writes them ("beam, fem"; "Key = 1, 2"), blanks around each
 /// item removed, empty items dropped.

@@ -7,13 +7,12 @@
 // results.
 #include "fiberbridge/analysis/rdelta_data.h"
 #include "fiberbridge/analysis/test_record.h"
+#include "fiberbridge/app/scene_parameters.h"
 #include "fiberbridge/core/summary.h"
 #include "fiberbridge/law/law_spec.h"
 #include "fiberbridge/law/traction_law.h"
 #include "fiberbridge/result/rcurve.h"
 #include "fiberbridge/specimen/specimen.h"
-
-#include <deal.II/base/parameter_handler.h>
 
 #include <map>
 #include <memory>
@@ -22,6 +21,9 @@
 #include <string>
 #include <vector>
 
+namespace dealii {
+class ParameterHandler; // the scene reader's (scene.cc): sections declare and parse with it
+}
 namespace fiberbridge::app {
 
 struct ExtractionOutcome; // analysis_steps.h
@@ -57,16 +59,14 @@ struct SpecimenSetup {
 };
 
 struct SceneContext {
-  dealii::ParameterHandler* prm = nullptr; ///< every section declared, the scene parsed
-  /// Owns *prm when this context reads a copy of the scene's parameters (a study's run with its
-  /// overrides, derived()); empty when prm belongs to the scene runner.
-  std::shared_ptr<dealii::ParameterHandler> own_prm;
+  /// Every section of the scene, parsed once when it was read (scene_parameters.h); a study's
+  /// run reads a copy with its overrides (derived()). The ParameterHandler is gone by the time
+  /// an item checks or runs.
+  std::shared_ptr<const SceneParameters> params;
+  const SceneParameters& parameters() const { return *params; }
   std::string output_dir;
   Json summary = Json::object();
   std::string scene_file; ///< for resolving relative data paths
-  /// The run's --set settings, in order: with scene_file, what a copy of the parameters reads
-  /// (copy_scene_parameters, scene.h).
-  std::vector<std::string> overrides;
   /// `fiberbridge run --resume`: units of work finished by an earlier run into this output
   /// directory are restored and checkpoints continued (resume_store.h, mpm/checkpoint.h).
   bool resume = false;
@@ -125,10 +125,10 @@ struct SceneContext {
     sections    ///< none of it: law, specimen and material from the (overridden) sections
   };
   /// A context for a run inside this one: the same scene file, resume flag and run items, its own
-  /// output directory, an empty summary and no results. `parameters`: the handler the run reads
-  /// (a copy with overrides, copy_scene_parameters in scene.h); nullptr = this context's.
+  /// output directory, an empty summary and no results. `parameters`: the parameters the run
+  /// reads (a copy with overrides, scene_parameters_with in scene.h); nullptr = this context's.
   SceneContext derived(const std::string& dir, HandOn what,
-                       std::shared_ptr<dealii::ParameterHandler> parameters = nullptr) const;
+                       std::shared_ptr<const SceneParameters> parameters = nullptr) const;
 
 private:
   std::optional<CrackLaw> section_law_; ///< the Cohesive law section, built on first use
@@ -139,6 +139,9 @@ private:
 struct SceneItem {
   std::string name;
   void (*declare)(dealii::ParameterHandler&); ///< may be nullptr (no own section)
+  /// Parses the sections `declare` declared into the scene's parameters (parse_into, section.h),
+  /// once, when the scene is read; nullptr with declare.
+  void (*parse)(dealii::ParameterHandler&, SceneParameters&);
   /// Reads and validates every section the item will use, as `run` reads them, without running
   /// or writing anything; throws InputError naming the section and key. The scene calls it for
   /// every item of the run before the first item runs.

@@ -8,7 +8,10 @@
 // the analysis sections in items_analysis.cc (Data, Fit, Rank, Bridging), the shared ones in
 // shared_sections.h (Cohesive law, Specimen, Material), Test in test_section.h, Identify,
 // Compare and Study beside their items. A check that needs the scene's folder (a file must
-// exist) is the item's, after parsing.
+// exist) is the item's, after parsing. Every section is parsed once, when the scene is read
+// (parse_into, into SceneParameters); the items read the parsed structs, never the handler.
+#include "fiberbridge/app/scene_parameters.h"
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
@@ -36,6 +39,19 @@ Section parse_section(dealii::ParameterHandler& prm, const std::string& name) {
   }
   prm.leave_subsection();
   return s;
+}
+
+/// The section `name` parsed into `out` once, when the scene is read, as a `Stored` (the
+/// section's struct, or the public struct it derives from when the items read only that): an
+/// error its parse throws is kept and thrown where an item reads the section
+/// (SceneParameters::section).
+template <class Section, class Stored = Section>
+void parse_into(dealii::ParameterHandler& prm, const std::string& name, SceneParameters& out) {
+  try {
+    out.store(name, Stored(parse_section<Section>(prm, name)));
+  } catch (...) {
+    out.store_error(name, std::current_exception());
+  }
 }
 
 } // namespace fiberbridge::app
