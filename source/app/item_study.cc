@@ -3,6 +3,8 @@
 // parameter overrides, so a study measures exactly what a user's scene would run. Every run is
 // an independent task: under mpirun they are spread over the ranks (task_distributor.h) and the
 // tables are the same as on one rank.
+#include "study_writers.h"
+
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/models.h"
 #include "fiberbridge/app/result_codec.h"
@@ -154,6 +156,59 @@ std::string level_setting(const Ladder& ladder, std::size_t l) {
   for (const auto& [k, v] : ladder.keys)
     setting += (setting.empty() ? "" : "; ") + k + " = " + v[l];
   return setting;
+}
+
+/// One ladder's levels from the study's gathered results (`done`, the ladder's first level at
+/// `first_task`): each level's errors against G_law = J_tip + law area, its peak load, the
+/// observed orders, and the cheapest level whose errors are both below `target`.
+LadderOutcome analyse_ladder(const Ladder& ladder, const TaskResults& done, std::size_t first_task,
+                             double G_law, double target) {
+  LadderOutcome out;
+  out.model = ladder.model;
+  out.target = target;
+  auto& run_levels = out.levels;
+  for (std::size_t l = 0, task = first_task; l < ladder.levels; ++l, ++task) {
+    auto r = result_from_json(json_from_bytes(done.output[task]));
+    double peak = 0;
+    for (const auto& p : r.rcurve)
+      if (std::isfinite(p.load))
+        peak = std::max(peak, p.load);
+    const double g_err = std::abs(r.G_ss - G_law) / G_law;
+    LadderLevel level;
+    level.setting = level_setting(ladder, l);
+    level.key_value = std::strtod(ladder.keys[0].second[l].c_str(), nullptr);
+    level.r = std::move(r);
+    level.g_err = g_err;
+    level.peak = peak;
+    level.rank = done.rank[task];
+    level.cpu_s = done.cpu_seconds[task];
+    run_levels.push_back(std::move(level));
+  }
+  // Observed orders: p = log(e_l / e_{l+1}) / log(refinement factor); the peak load has no
+  // exact value, so its order comes from three successive levels (constant factor assumed).
+  const auto factor = [&](std::size_t l) {
+    const double a = run_levels[l].key_value, b = run_levels[l + 1].key_value;
+    return a > 0 && b > 0 ? std::max(a / b, b / a) : result::not_available;
+  };
+  const auto order = [&](double e0, double e1, double f) {
+    return e0 > 0 && e1 > 0 && f > 1 ? std::log(e0 / e1) / std::log(f) : result::not_available;
+  };
+  for (std::size_t l = 0; l < run_levels.size(); ++l) {
+    auto& L = run_levels[l];
+    if (l + 1 < run_levels.size()) {
+      const auto& N = run_levels[l + 1];
+      L.order_rdelta = order(L.r.rdelta_rel_error_vs_eq2, N.r.rdelta_rel_error_vs_eq2, factor(l));
+      L.order_G_ss = order(L.g_err, N.g_err, factor(l));
+      if (l + 2 < run_levels.size())
+        L.order_peak =
+            order(std::abs(L.peak - N.peak), std::abs(N.peak - run_levels[l + 2].peak), factor(l));
+    }
+    const double worst = std::max(L.r.rdelta_rel_error_vs_eq2, L.g_err);
+    if (worst <= target &&
+        (out.cheapest < 0 || L.r.wall_time_s < run_levels[out.cheapest].r.wall_time_s))
+      out.cheapest = static_cast<int>(l);
+  }
+  return out;
 }
 
 /// One ladder level: the model with the level's keys, in study/<model>_level<l>.
@@ -374,139 +429,33 @@ void run_study_item(SceneContext& ctx) {
   const auto done = run_tasks_across_ranks(
       tasks.size(), [&](std::size_t i) { return tasks[i](); }, simulation_communicator(), cost);
 
+  // ---- the ladders' levels with their errors and observed orders, the stability rows
+  std::vector<LadderOutcome> outcomes;
+  if (!ladders.empty()) {
+    const double G_law = ctx.j_tip() + ctx.law()->area();
+    std::size_t task = 0;
+    for (const auto& ladder : ladders) {
+      outcomes.push_back(analyse_ladder(ladder, done, task, G_law, plan.target.at(ladder.model)));
+      task += ladder.levels;
+    }
+  }
+  std::vector<Json> stability_rows;
+  for (std::size_t k = 0; k < case_runs.size(); ++k) {
+    Json row = json_from_bytes(done.output[first_case_task + k]);
+    row["rank"] = done.rank[first_case_task + k];
+    row["cpu_s"] = done.cpu_seconds[first_case_task + k];
+    stability_rows.push_back(std::move(row));
+  }
+
+  // ---- written: the tables, plots and the summary block
   Json block = Json::object();
   int n_ranks = 1;
   MPI_Comm_size(simulation_communicator(), &n_ranks);
   block["ranks"] = n_ranks;
-
-  // ---- error against run time
-  if (!ladders.empty()) {
-    CsvWriter w(ctx.out("study_error_vs_time.csv"),
-                {"model", "level", "n_dofs_or_particles", "wall_time_s", "rdelta_rel_error",
-                 "G_ss_rel_error"},
-                {"settings per level in summary.json (study.error_vs_time)",
-                 "rdelta_rel_error: relative L2 of R_J (Eq. 2 with J measured) against Eq. 2 of "
-                 "the law over the developing part; G_ss_rel_error against J_tip + law area"});
-    Json rows = Json::array();
-    std::string plot = gnuplot_png_preamble("study_error_vs_time.png");
-    plot += "set logscale xy\nset xlabel 'wall time (s)'\nset ylabel 'relative error'\n"
-            "set key top right\nplot ";
-    bool first_plot = true;
-    const double G_law = ctx.j_tip() + ctx.law()->area();
-    // The ladders run the scene's law and specimen set-up: say where they came from.
-    block["law_source"] = law_source_name(ctx.crack_law().source);
-    block["specimen_source"] = specimen_source_name(ctx.specimen_setup().source);
-    std::size_t task = 0;
-    for (const auto& ladder : ladders) {
-      const auto& model = ladder.model;
-      const std::string csv = "study_" + model + ".csv";
-      CsvWriter mw(ctx.out(csv),
-                   {"wall_time_s", "rdelta_rel_error", "G_ss_rel_error", "peak_load_N",
-                    "observed_order_rdelta", "observed_order_G_ss", "observed_order_peak_load"},
-                   {model + " ladder; orders from successive levels, taking the ratio of the "
-                            "first varied key's values as the refinement factor"});
-      struct Level {
-        std::string setting;
-        double key_value;
-        result::SimulationResult r;
-        double g_err, peak;
-        int rank;
-        double cpu_s;
-      };
-      std::vector<Level> run_levels;
-      for (std::size_t l = 0; l < ladder.levels; ++l, ++task) {
-        auto r = result_from_json(json_from_bytes(done.output[task]));
-        double peak = 0;
-        for (const auto& p : r.rcurve)
-          if (std::isfinite(p.load))
-            peak = std::max(peak, p.load);
-        const double g_err = std::abs(r.G_ss - G_law) / G_law;
-        run_levels.push_back({level_setting(ladder, l),
-                              std::strtod(ladder.keys[0].second[l].c_str(), nullptr), std::move(r),
-                              g_err, peak, done.rank[task], done.cpu_seconds[task]});
-      }
-      // Observed orders: p = log(e_l / e_{l+1}) / log(refinement factor); the peak load has no
-      // exact value, so its order comes from three successive levels (constant factor assumed).
-      const auto factor = [&](std::size_t l) {
-        const double a = run_levels[l].key_value, b = run_levels[l + 1].key_value;
-        return a > 0 && b > 0 ? std::max(a / b, b / a) : result::not_available;
-      };
-      const auto order = [&](double e0, double e1, double f) {
-        return e0 > 0 && e1 > 0 && f > 1 ? std::log(e0 / e1) / std::log(f) : result::not_available;
-      };
-      const double target = plan.target.at(model);
-      int cheapest = -1;
-      for (std::size_t l = 0; l < run_levels.size(); ++l) {
-        const auto& L = run_levels[l];
-        double p_r = result::not_available, p_g = result::not_available,
-               p_p = result::not_available;
-        if (l + 1 < run_levels.size()) {
-          const auto& N = run_levels[l + 1];
-          p_r = order(L.r.rdelta_rel_error_vs_eq2, N.r.rdelta_rel_error_vs_eq2, factor(l));
-          p_g = order(L.g_err, N.g_err, factor(l));
-          if (l + 2 < run_levels.size())
-            p_p = order(std::abs(L.peak - N.peak), std::abs(N.peak - run_levels[l + 2].peak),
-                        factor(l));
-        }
-        const double worst = std::max(L.r.rdelta_rel_error_vs_eq2, L.g_err);
-        if (worst <= target &&
-            (cheapest < 0 || L.r.wall_time_s < run_levels[cheapest].r.wall_time_s))
-          cheapest = static_cast<int>(l);
-        w.row({model, std::to_string(l)}, {double(L.r.n_dofs_or_particles), L.r.wall_time_s,
-                                           L.r.rdelta_rel_error_vs_eq2, L.g_err});
-        mw.row({L.r.wall_time_s, L.r.rdelta_rel_error_vs_eq2, L.g_err, L.peak, p_r, p_g, p_p});
-        rows.push_back({{"model", model},
-                        {"level", l},
-                        {"setting", L.setting},
-                        {"n_dofs_or_particles", L.r.n_dofs_or_particles},
-                        {"wall_time_s", json_number(L.r.wall_time_s)},
-                        {"rdelta_rel_error", json_number(L.r.rdelta_rel_error_vs_eq2)},
-                        {"G_ss_rel_error", json_number(L.g_err)},
-                        {"peak_load_N", L.peak},
-                        {"observed_order_rdelta", json_number(p_r)},
-                        {"observed_order_G_ss", json_number(p_g)},
-                        {"observed_order_peak_load", json_number(p_p)},
-                        {"reached_steady_state", L.r.reached_steady_state},
-                        {"rank", L.rank},
-                        {"cpu_s", L.cpu_s}});
-      }
-      block["cheapest"][model] = cheapest < 0
-                                     ? Json("no level reached " + std::to_string(target))
-                                     : Json({{"level", cheapest},
-                                             {"setting", run_levels[cheapest].setting},
-                                             {"target", target},
-                                             {"wall_time_s", run_levels[cheapest].r.wall_time_s}});
-      mw.close();
-      plot += std::string(first_plot ? "" : ", ") + "'" + csv +
-              "' using 1:2 with linespoints lw 2 title '" + model + " R_J vs Eq. 2', '" + csv +
-              "' using 1:3 with linespoints lw 2 dt 2 title '" + model + " G_{ss}'";
-      first_plot = false;
-    }
-    w.close();
-    plot += "\n";
-    if (run_gnuplot(ctx.output_dir, plot))
-      ctx.summary["plots"].push_back("study_error_vs_time.png");
-    block["error_vs_time"] = rows;
-  }
-
-  // ---- stability matrix
-  if (!stability_models.empty()) {
-    CsvWriter w(ctx.out("stability.csv"), {"case", "model", "outcome", "diagnosis", "wall_time_s"},
-                {"outcome: converged (plateau within the tolerance of J_tip + area) | diagnosed "
-                 "stop (the model said why it stopped) | suspect | failure"});
-    Json rows = Json::array();
-    for (std::size_t k = 0; k < case_runs.size(); ++k) {
-      Json row = json_from_bytes(done.output[first_case_task + k]);
-      w.row({row["case"].get<std::string>(), row["model"].get<std::string>(),
-             row["outcome"].get<std::string>(), row["diagnosis"].get<std::string>()},
-            {row["wall_time_s"].get<double>()});
-      row["rank"] = done.rank[first_case_task + k];
-      row["cpu_s"] = done.cpu_seconds[first_case_task + k];
-      rows.push_back(std::move(row));
-    }
-    w.close();
-    block["stability"] = rows;
-  }
+  if (!ladders.empty())
+    write_study_ladders(ctx, outcomes, block);
+  if (!stability_models.empty())
+    write_study_stability(ctx, stability_rows, block);
   ctx.summary["study"] = block;
 }
 
