@@ -1,13 +1,12 @@
-// libFuzzer target: the scene reader (app/scene.cc read_scene: deal.II ParameterHandler with
-// every section declared, unknown keys rejected) with `--set` overrides, then the sections every
-// simulation reads (Cohesive law, Specimen, Material). Input: a scene file; each line that starts
+// libFuzzer target: the scene reader (app/scene.cc read_scene_parameters: deal.II
+// ParameterHandler with every section declared, unknown keys rejected, every section parsed once)
+// with `--set` overrides, then the sections every simulation reads (Cohesive law, Specimen,
+// Material). Input: a scene file; each line that starts
 // with "#--set " (a comment to deal.II, so bundled scenes are valid inputs as they are) adds the
 // rest of the line as one --set override.
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/app/scene_context.h"
 #include "fuzz_input.h"
-
-#include <deal.II/base/parameter_handler.h>
 
 #include <sstream>
 
@@ -20,10 +19,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (line.rfind("#--set ", 0) == 0)
       overrides.push_back(line.substr(7));
   fuzz::expect_success_or_input_error([&] {
-    dealii::ParameterHandler prm;
-    (void)app::read_scene(prm, fuzz::as_file(text, ".prm"), overrides);
     app::SceneContext ctx;
-    ctx.prm = &prm;
+    ctx.params = app::read_scene_parameters(fuzz::as_file(text, ".prm"), overrides);
     ctx.scene_file = "fuzz.prm";
     fuzz::expect_success_or_input_error([&] { (void)ctx.law(); });
     fuzz::expect_success_or_input_error([&] { (void)ctx.specimen(); });
