@@ -49,9 +49,8 @@ TEST(CampaignScene, BundledSyntheticRebuildsTable1AndRanking) {
 }
 
 TEST(CampaignScene, RealRecordsAsOneGroupOfRawRecords) {
-  const auto r =
-      run("campaign_real", "run " + source("prm/campaign_real_records.prm") +
-                               " --set \"Output directory=out\"");
+  const auto r = run("campaign_real", "run " + source("prm/campaign_real_records.prm") +
+                                          " --set \"Output directory=out\"");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto s = read_json(work("campaign_real") / "out" / "summary.json")["campaign"];
   ASSERT_EQ(s["groups"].size(), 1u);
