@@ -18,13 +18,14 @@ namespace fs = std::filesystem;
 
 analysis::TestRecord read_campaign_dic_set(const analysis::CampaignRow& row,
                                            const CampaignDicSets& sets, std::string& record_text) {
-  const std::string where = row.where() + ": DIC set '" + row.file_as_written + "'";
+  // Errors get the manifest line from load_campaign_specimen; messages of the DIC step name it.
+  const std::string set = "DIC set '" + row.file_as_written + "'";
   if (trim_blanks(sets.dic.frames).empty())
-    throw InputError(where + ": DIC/Frames must name the frames inside each set's folder (a "
-                             "glob relative to it, e.g. frames/*.csv)");
+    throw InputError(set + ": DIC/Frames must name the frames inside each set's folder (a glob "
+                           "relative to it, e.g. frames/*.csv)");
   if (sets.test.files.size() != 1)
-    throw InputError(where + ": Test/Files must name the one machine record (time, opening, "
-                             "load) inside each set's folder, e.g. machine.csv");
+    throw InputError(set + ": Test/Files must name the one machine record (time, opening, load) "
+                           "inside each set's folder, e.g. machine.csv");
   // Entries relative to the set's folder (expand_frame_list would try them as given first).
   std::string list;
   for (std::size_t b = 0; b <= sets.dic.frames.size();) {
@@ -38,20 +39,19 @@ analysis::TestRecord read_campaign_dic_set(const analysis::CampaignRow& row,
               (fs::path(entry).is_absolute() ? entry : (fs::path(row.file) / entry).string());
   }
   DicStepOptions o;
-  o.where = where;
   o.dic = sets.dic.options();
-  o.frames = dic::expand_frame_list(list, "", where + ": DIC/Frames");
+  o.frames = dic::expand_frame_list(list, "", set + ": DIC/Frames");
   o.machine_record = (fs::path(row.file) / sets.test.files.front()).string();
   if (!fs::is_regular_file(o.machine_record))
-    throw InputError(where + ": Test/Files: machine record '" + sets.test.files.front() +
+    throw InputError(set + ": Test/Files: machine record '" + sets.test.files.front() +
                      "' not found in the set's folder");
   o.machine_columns = sets.test.columns;
   o.initial_crack = std::isfinite(row.initial_crack) ? row.initial_crack : sets.scene_initial_crack;
   // The DIC step without its files (dic_step.cc: run_dic writes them for a scene's own dic).
-  const auto files = dic::order_frames(o.frames, where + ": DIC/Frames");
+  const auto files = dic::order_frames(o.frames, set + ": DIC/Frames");
   const dic::DicAnalysis analysis = dic::analyse_frames(files, o.dic);
   const dic::MachineRecord machine =
-      dic::read_machine_record(o.machine_record, o.machine_columns, where + ": Test/Columns");
+      dic::read_machine_record(o.machine_record, o.machine_columns, set + ": Test/Columns");
   std::vector<std::string> notes;
   const auto rows = dic::match_to_machine(analysis, machine, o.initial_crack, notes);
   record_text = dic::dic_record_text(
@@ -81,7 +81,7 @@ analysis::TestRecord read_campaign_dic_set(const analysis::CampaignRow& row,
   }
   fs::remove(tmp);
   if (records.size() != 1)
-    throw InputError(where + ": the DIC step gave " + std::to_string(records.size()) + " records");
+    throw InputError(set + ": the DIC step gave " + std::to_string(records.size()) + " records");
   records.front().name = row.specimen;
   records.front().source = row.file;
   return records.front();

@@ -239,4 +239,19 @@ TEST(AppDic, CampaignManifestTakesDicSets) {
   EXPECT_NE(err.str().find("manifest.csv:3"), std::string::npos) << err.str();
   EXPECT_NE(err.str().find("manifest.csv:2"), std::string::npos) << err.str();
   EXPECT_NE(err.str().find("one kind of input"), std::string::npos) << err.str();
+
+  // A DIC set needs DIC/Frames (inside each set's folder): said with the manifest line, no table.
+  std::ofstream(dir / "manifest.csv") << "file,material,cycles,specimen\nset1,X,0,s1\n";
+  std::string no_frames = campaign;
+  no_frames.replace(no_frames.find("set Frames = frames/dcb_*_0.csv"), 31, "set Frames =");
+  std::ofstream(dir / "scene.prm") << no_frames;
+  fs::remove_all(dir / "out");
+  EXPECT_NE(std::system(cmd.c_str()), 0);
+  std::ifstream in2(dir / "stderr.txt");
+  std::stringstream err2;
+  err2 << in2.rdbuf();
+  EXPECT_NE(err2.str().find("manifest.csv:2: DIC set 'set1': DIC/Frames must name the frames"),
+            std::string::npos)
+      << err2.str();
+  EXPECT_FALSE(fs::exists(dir / "out" / "campaign_table1.csv"));
 }
