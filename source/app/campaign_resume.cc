@@ -120,6 +120,9 @@ Fingerprint campaign_group_inputs(const Fingerprint& scene, const analysis::Camp
   Fingerprint fp = scene;
   using law::exact_number;
   auto opt = [](double v) { return std::isfinite(v) ? exact_number(v) : std::string("-"); };
+  // The manifest as resolved: the notes a group keeps name it (manifest:line).
+  if (!group.members.empty())
+    fp.emplace_back("campaign manifest", specimens[group.members.front()].row.manifest);
   for (std::size_t k = 0; k < group.members.size(); ++k) {
     const auto& r = specimens[group.members[k]].row;
     const std::string key = "campaign member " + std::to_string(k + 1);

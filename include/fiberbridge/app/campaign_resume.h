@@ -14,7 +14,8 @@
 
 namespace fiberbridge::app {
 
-/// The scene's parameters and, per member of the group, its manifest row (material, cycles,
+/// The scene's parameters, the manifest's path as resolved (the group's notes name it) and, per
+/// member of the group, its manifest row (material, cycles,
 /// specimen, the per-row values) and a hash of its file's bytes (a DIC set: of every file under
 /// its folder, with their names).
 Fingerprint campaign_group_inputs(const Fingerprint& scene, const analysis::CampaignGroup& group,
