@@ -47,7 +47,8 @@ CampaignManifest read_campaign_manifest(const std::string& path) {
     if (!t.has_column(c))
       throw InputError(path +
                        ": manifest needs the columns file, material, cycles, specimen "
-                       "(optional delta_c_mm, j_tip_J_m2, width_mm, arm_thickness_mm); "
+                       "(optional delta_c_mm, j_tip_J_m2, width_mm, arm_thickness_mm, a0_mm, "
+                       "length_mm); "
                        "column '" +
                        std::string(c) + "' is missing");
   if (t.n_rows() == 0)
@@ -75,13 +76,17 @@ CampaignManifest read_campaign_manifest(const std::string& path) {
                        "'");
     const std::filesystem::path f(r.file_as_written);
     r.file = (f.is_absolute() ? f : folder / f).lexically_normal().string();
-    if (!std::filesystem::is_regular_file(r.file))
+    if (!std::filesystem::is_regular_file(r.file) && !std::filesystem::is_directory(r.file))
       throw InputError(where + ": file '" + r.file_as_written + "' not found (looked for " +
                        r.file + "; paths are relative to the manifest's folder)");
     r.delta_c = optional_positive(t, "delta_c_mm", i, units::mm, where);
     r.j_tip = optional_positive(t, "j_tip_J_m2", i, 1.0, where);
     r.width = optional_positive(t, "width_mm", i, units::mm, where);
     r.arm_thickness = optional_positive(t, "arm_thickness_mm", i, units::mm, where);
+    r.initial_crack = optional_positive(t, "a0_mm", i, units::mm, where);
+    r.length = optional_positive(t, "length_mm", i, units::mm, where);
+    if (std::isfinite(r.initial_crack) && std::isfinite(r.length) && !(r.initial_crack < r.length))
+      throw InputError(where + ": a0_mm must be shorter than length_mm");
     const auto key = std::make_tuple(r.material, r.cycles, r.specimen);
     if (const auto it = seen.find(key); it != seen.end())
       throw InputError(where + ": specimen '" + r.specimen + "' of " + r.material + " at " + c +
@@ -100,10 +105,14 @@ CampaignManifest read_campaign_manifest(const std::string& path) {
 }
 
 const char* to_string(SpecimenInput k) {
-  return k == SpecimenInput::rdelta ? "R(delta) table" : "raw test record";
+  return k == SpecimenInput::rdelta       ? "R(delta) table"
+         : k == SpecimenInput::raw_record ? "raw test record"
+                                          : "DIC set";
 }
 
 SpecimenInput classify_specimen_file(const std::string& path) {
+  if (std::filesystem::is_directory(path))
+    return SpecimenInput::dic_set;
   const CsvTable t = CsvTable::read(path);
   return t.has_column("delta_mm") && t.has_column("R_J_m2") ? SpecimenInput::rdelta
                                                             : SpecimenInput::raw_record;
@@ -124,7 +133,15 @@ CampaignSpecimen load_campaign_specimen(const CampaignRow& row, const RawRecordO
       s.curve = d.replicates.front();
       s.has_rdelta = true;
     } else {
-      const auto records = read_test_records(row.file, raw.read);
+      std::vector<TestRecord> records;
+      if (s.input == SpecimenInput::dic_set) {
+        if (!raw.dic_set)
+          throw InputError("'" + row.file_as_written +
+                           "' is a folder (a DIC set), which this reader cannot analyse");
+        records.push_back(raw.dic_set(row));
+      } else {
+        records = read_test_records(row.file, raw.read);
+      }
       if (records.size() != 1)
         throw InputError(row.file + " holds " + std::to_string(records.size()) +
                          " records; a manifest row is one specimen");
@@ -133,6 +150,12 @@ CampaignSpecimen load_campaign_specimen(const CampaignRow& row, const RawRecordO
         spec.width = row.width;
       if (std::isfinite(row.arm_thickness))
         spec.arm_thickness = row.arm_thickness;
+      if (std::isfinite(row.length))
+        spec.length = row.length;
+      // The row's a0 replaces the Specimen's where the reduction uses the Specimen's (Test/Use
+      // specimen initial crack); otherwise the record's first crack reading gives a0.
+      if (std::isfinite(row.initial_crack) && std::isfinite(spec.initial_crack))
+        spec.initial_crack = row.initial_crack;
       const ReducedRecord rr = reduce_record(records.front(), spec, raw.reduce);
       if (!rr.delta_root.empty()) {
         s.curve = to_rdelta({rr}, row.file).replicates.front();

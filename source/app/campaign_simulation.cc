@@ -2,14 +2,18 @@
 #include "fiberbridge/app/campaign_simulation.h"
 #include "fiberbridge/analysis/line_fit.h"
 
+#include "fiberbridge/app/campaign_resume.h"
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/models.h"
+#include "fiberbridge/app/resume_store.h"
 #include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
+#include "fiberbridge/core/output_guard.h"
 #include "fiberbridge/core/plot.h"
 #include "fiberbridge/core/units.h"
+#include "fiberbridge/law/law_fingerprint.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
 
 #include <algorithm>
@@ -47,16 +51,38 @@ result::SimulationResult run_model(SceneContext& ctx, const std::string& model,
   return m->simulate(ctx, law, j_tip);
 }
 
-GroupSimulation simulate_group(SceneContext& ctx, const analysis::CampaignGroup& g,
-                               const std::string& model) {
+/// The group's simulation before it runs: its name, model and specimen (with the note on
+/// differing geometry).
+GroupSimulation prepare_group(const SceneContext& ctx, const analysis::CampaignResult& r,
+                              const analysis::CampaignGroup& g, const std::string& model) {
   GroupSimulation s;
   s.material = g.material;
   s.cycles = g.cycles;
   s.model = model;
+  s.specimen = campaign_group_specimen(ctx.specimen(), g, r.specimens, s.geometry_note);
+  return s;
+}
+
+/// The context a group's simulation reads: the scene's, with the group's specimen handed on.
+SceneContext group_context(const SceneContext& ctx, const GroupSimulation& s) {
+  SceneContext sub = ctx.derived(ctx.output_dir, SceneContext::HandOn::everything);
+  SpecimenSetup setup = ctx.specimen_setup();
+  setup.specimen = s.specimen;
+  sub.handed_specimen = setup;
+  return sub;
+}
+
+GroupSimulation simulate_group(const SceneContext& ctx, const analysis::CampaignGroup& g,
+                               GroupSimulation s) {
   const auto t0 = std::chrono::steady_clock::now();
   try {
+    s.specimen.validate("Campaign: the specimen of " + g.material + " at " + fmt(g.cycles) +
+                        " cycles");
+    SceneContext sub = group_context(ctx, s);
     const auto law = law::make_trilinear(g.estimate.tri);
-    const auto res = run_model(ctx, model, law, g.estimate.j_tip);
+    const auto res = run_model(sub, s.model, law, g.estimate.j_tip);
+    if (!res.rcurve.empty())
+      s.a_start = res.rcurve.front().a;
     for (const auto& p : res.rcurve) {
       const double R = std::isfinite(p.R_energy) ? p.R_energy : p.R_J;
       if (!std::isfinite(p.delta_root) || !std::isfinite(R))
@@ -92,49 +118,23 @@ GroupSimulation simulate_group(SceneContext& ctx, const analysis::CampaignGroup&
   return s;
 }
 
-std::string encode(const GroupSimulation& s) {
-  std::string t;
-  char buf[64];
-  auto put = [&](double v) {
-    std::snprintf(buf, sizeof buf, "%.17g ", v);
-    t += buf;
-  };
-  t += std::to_string(s.ran ? 1 : 0) + " " + std::to_string(s.delta_root.size()) + " ";
-  for (std::size_t i = 0; i < s.delta_root.size(); ++i) {
-    put(s.delta_root[i]);
-    put(s.R[i]);
-  }
-  put(s.G_ss);
-  put(s.misfit_rel);
-  put(s.within_scatter);
-  put(s.wall_time_s);
-  return t + "\n" + s.failure;
-}
-
-void decode(const std::string& t, GroupSimulation& s) {
-  std::istringstream in(t);
-  auto get = [&] {
-    std::string w;
-    in >> w;
-    return std::strtod(w.c_str(), nullptr);
-  };
-  int ran = 0;
-  std::size_t n = 0;
-  in >> ran >> n;
-  s.ran = ran != 0;
-  s.delta_root.resize(n);
-  s.R.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    s.delta_root[i] = get();
-    s.R[i] = get();
-  }
-  s.G_ss = get();
-  s.misfit_rel = get();
-  s.within_scatter = get();
-  s.wall_time_s = get();
-  std::string line;
-  std::getline(in, line);
-  std::getline(in, s.failure);
+/// What a group's simulation depends on: the scene and what a simulation takes from it
+/// (simulation_fingerprint, with the group's specimen in effect), the group's members and files,
+/// and the group's law and J_tip to the bit.
+Fingerprint simulation_inputs(const SceneContext& ctx, const Fingerprint& group_inputs,
+                              const analysis::CampaignGroup& g, const GroupSimulation& s) {
+  SceneContext sub = group_context(ctx, s);
+  Fingerprint fp = simulation_fingerprint(sub);
+  for (std::size_t i = scene_fingerprint(ctx.parameters()).size(); i < group_inputs.size(); ++i)
+    fp.push_back(group_inputs[i]);
+  using law::exact_number;
+  const auto& t = g.estimate.tri;
+  fp.emplace_back("campaign group law", exact_number(t.d1) + " " + exact_number(t.s1) + " " +
+                                            exact_number(t.d2) + " " + exact_number(t.s2) + " " +
+                                            exact_number(t.dc) + " J_tip " +
+                                            exact_number(g.estimate.j_tip));
+  fp.emplace_back("campaign simulation model", s.model);
+  return fp;
 }
 
 } // namespace
@@ -151,6 +151,61 @@ std::vector<std::string> campaign_simulation_models() {
   return names;
 }
 
+specimen::Specimen campaign_group_specimen(const specimen::Specimen& scene,
+                                           const analysis::CampaignGroup& group,
+                                           const std::vector<analysis::CampaignSpecimen>& specimens,
+                                           std::string& note) {
+  // Each member's geometry: the scene's where its row says nothing.
+  std::vector<specimen::Specimen> each;
+  for (auto m : group.members) {
+    const auto& r = specimens[m].row;
+    specimen::Specimen s = scene;
+    if (std::isfinite(r.width))
+      s.width = r.width;
+    if (std::isfinite(r.arm_thickness))
+      s.height = 2 * r.arm_thickness;
+    if (std::isfinite(r.initial_crack))
+      s.initial_crack = r.initial_crack;
+    if (std::isfinite(r.length))
+      s.length = r.length;
+    each.push_back(s);
+  }
+  note.clear();
+  if (each.empty())
+    return scene;
+  struct Dim {
+    const char* name;
+    double specimen::Specimen::*field;
+    double scale; // to mm as the manifest gives it (height: the arm thickness, h = height/2)
+  };
+  const Dim dims[] = {{"width", &specimen::Specimen::width, 1e3},
+                      {"arm thickness", &specimen::Specimen::height, 0.5e3},
+                      {"a0", &specimen::Specimen::initial_crack, 1e3},
+                      {"length", &specimen::Specimen::length, 1e3}};
+  specimen::Specimen out = each.front();
+  std::string ranges;
+  for (const auto& d : dims) {
+    std::vector<double> v;
+    for (const auto& s : each)
+      v.push_back(s.*(d.field));
+    std::sort(v.begin(), v.end());
+    if (v.front() == v.back())
+      continue;
+    // The median (of an even count: the mean of the middle two).
+    const std::size_t n = v.size();
+    out.*(d.field) = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    ranges += std::string(ranges.empty() ? "" : ", ") + d.name + " " + fmt(v.front() * d.scale) +
+              "-" + fmt(v.back() * d.scale) + " mm";
+  }
+  if (!ranges.empty())
+    note = group.material + " at " + fmt(group.cycles) + " cycles: the specimens differ in " +
+           "geometry (" + ranges + "); the law is simulated on the median specimen (width " +
+           fmt(out.width * 1e3) + " mm, arm thickness " + fmt(out.arm_thickness() * 1e3) +
+           " mm, a0 " + fmt(out.initial_crack * 1e3) + " mm, length " + fmt(out.length * 1e3) +
+           " mm)";
+  return out;
+}
+
 std::vector<GroupSimulation> simulate_campaign_laws(SceneContext& ctx,
                                                     const analysis::CampaignResult& r,
                                                     const std::string& model) {
@@ -158,27 +213,53 @@ std::vector<GroupSimulation> simulate_campaign_laws(SceneContext& ctx,
   for (const auto& g : r.groups)
     if (g.estimate.ok && g.estimate.has_law)
       groups.push_back(&g);
-  std::vector<GroupSimulation> sims(groups.size());
+  // Each group's simulation is a unit of work for --resume (campaign_resume.h).
+  const Fingerprint scene = scene_fingerprint(ctx.parameters());
+  std::vector<GroupSimulation> sims;
+  std::vector<Fingerprint> inputs;
+  std::vector<bool> restored;
+  for (const auto* g : groups) {
+    sims.push_back(prepare_group(ctx, r, *g, model));
+    inputs.push_back(
+        simulation_inputs(ctx, campaign_group_inputs(scene, *g, r.specimens), *g, sims.back()));
+    restored.push_back(
+        restore_campaign_simulation(ctx.output_dir, ctx.resume, inputs.back(), sims.back()));
+    if (restored.back() && output_enabled())
+      std::cerr << "campaign: resume: " << model << " simulation of " << g->material << " at "
+                << fmt(g->cycles) << " cycles restored\n";
+  }
   int ranks = 1;
   MPI_Comm_size(simulation_communicator(), &ranks);
   if (ranks == 1) {
     for (std::size_t i = 0; i < groups.size(); ++i) {
-      sims[i] = simulate_group(ctx, *groups[i], model);
+      if (restored[i])
+        continue;
+      sims[i] = simulate_group(ctx, *groups[i], sims[i]);
+      keep_campaign_simulation(ctx.output_dir, inputs[i], sims[i]);
       std::cerr << "campaign: " << model << " simulation " << i + 1 << "/" << groups.size() << " "
                 << groups[i]->material << " at " << fmt(groups[i]->cycles) << " cycles, "
                 << fmt(sims[i].wall_time_s, 3) << " s\n";
     }
     return sims;
   }
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < groups.size(); ++i)
+    if (!restored[i])
+      todo.push_back(i);
   const auto out = run_tasks_across_ranks(
-      groups.size(), [&](std::size_t i) { return encode(simulate_group(ctx, *groups[i], model)); },
+      todo.size(),
+      [&](std::size_t k) {
+        const std::size_t i = todo[k];
+        const GroupSimulation s = simulate_group(ctx, *groups[i], sims[i]);
+        const TaskOwnsItsFiles own; // its record, written by the rank that ran it
+        keep_campaign_simulation(ctx.output_dir, inputs[i], s);
+        return campaign_simulation_bytes(s);
+      },
       simulation_communicator());
-  for (std::size_t i = 0; i < groups.size(); ++i) {
-    sims[i].material = groups[i]->material;
-    sims[i].cycles = groups[i]->cycles;
-    sims[i].model = model;
-    decode(out.output[i], sims[i]);
-  }
+  for (std::size_t k = 0; k < todo.size(); ++k)
+    campaign_simulation_from_bytes(out.output[k],
+                                   "campaign simulation from rank " + std::to_string(out.rank[k]),
+                                   sims[todo[k]]);
   return sims;
 }
 
@@ -188,13 +269,21 @@ void add_campaign_simulation_summary(const analysis::CampaignResult& r,
   for (const auto& s : sims)
     for (std::size_t i = 0; i < r.groups.size(); ++i)
       if (r.groups[i].material == s.material && r.groups[i].cycles == s.cycles)
-        groups[i]["simulation"] = {{"model", s.model},
-                                   {"ran", s.ran},
-                                   {"failure", s.failure},
-                                   {"G_ss_J_m2", json_number(s.G_ss)},
-                                   {"misfit_rel_to_G_B", json_number(s.misfit_rel)},
-                                   {"fraction_within_2_std", json_number(s.within_scatter)},
-                                   {"wall_time_s", json_number(s.wall_time_s)}};
+        groups[i]["simulation"] = {
+            {"model", s.model},
+            {"ran", s.ran},
+            {"failure", s.failure},
+            {"G_ss_J_m2", json_number(s.G_ss)},
+            {"misfit_rel_to_G_B", json_number(s.misfit_rel)},
+            {"fraction_within_2_std", json_number(s.within_scatter)},
+            {"wall_time_s", json_number(s.wall_time_s)},
+            {"specimen",
+             {{"width_mm", json_number(s.specimen.width / mm)},
+              {"arm_thickness_mm", json_number(s.specimen.arm_thickness() / mm)},
+              {"a0_mm", json_number(s.specimen.initial_crack / mm)},
+              {"length_mm", json_number(s.specimen.length / mm)}}},
+            {"a_start_mm", json_number(s.a_start / mm)},
+            {"geometry_note", s.geometry_note}};
 }
 
 std::vector<std::string> write_campaign_simulation_files(const analysis::CampaignResult& r,
@@ -212,9 +301,14 @@ std::vector<std::string> write_campaign_simulation_files(const analysis::Campaig
     CsvWriter w(out_dir + "/campaign_fig10_" + stem(s.material, s.cycles) + ".csv",
                 {"delta_mm", "R_measured_J_m2", "R_std_J_m2", "R_simulated_J_m2"},
                 {s.material + " after " + fmt(s.cycles) +
-                 " cycles: the group's averaged R(delta) "
-                 "and its scatter (standard deviation over the specimens) against the " +
-                 s.model + " simulation of the group's trilinear law (R_energy)"});
+                     " cycles: the group's averaged R(delta) "
+                     "and its scatter (standard deviation over the specimens) against the " +
+                     s.model + " simulation of the group's trilinear law (R_energy)",
+                 "simulated specimen: width " + fmt(s.specimen.width / mm) + " mm, arm thickness " +
+                     fmt(s.specimen.arm_thickness() / mm) + " mm, a0 " +
+                     fmt(s.specimen.initial_crack / mm) + " mm, length " +
+                     fmt(s.specimen.length / mm) + " mm" +
+                     (s.geometry_note.empty() ? "" : " (" + s.geometry_note + ")")});
     for (std::size_t i = 0; i < c.delta.size(); ++i)
       w.row({c.delta[i] / mm, c.R[i], c.R_std[i], interpolate(s.delta_root, s.R, c.delta[i])});
     w.close();

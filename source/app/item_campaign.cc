@@ -6,6 +6,8 @@
 // the options and its own seed, so 1 and N ranks give the same tables.
 #include "fiberbridge/analysis/campaign_run.h"
 #include "fiberbridge/app/analysis_steps.h"
+#include "fiberbridge/app/campaign_dic.h"
+#include "fiberbridge/app/campaign_resume.h"
 #include "fiberbridge/app/campaign_simulation.h"
 #include "fiberbridge/app/campaign_writers.h"
 #include "fiberbridge/app/items.h"
@@ -13,6 +15,7 @@
 #include "fiberbridge/app/section.h"
 #include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/app/test_section.h"
+#include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
 #include "fiberbridge/core/output_guard.h"
@@ -27,6 +30,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
+#include <memory>
 #include <sstream>
 
 namespace fiberbridge::app {
@@ -51,8 +56,10 @@ struct CampaignSection {
   static void declare_parameters(dealii::ParameterHandler& prm) {
     prm.declare_entry("Manifest", "", dealii::Patterns::Anything(),
                       "CSV with columns file, material, cycles, specimen (one row per specimen; "
-                      "optional delta_c_mm, j_tip_J_m2, width_mm, arm_thickness_mm); files "
-                      "relative to the manifest: R(delta) tables or raw test records.");
+                      "optional delta_c_mm, j_tip_J_m2, width_mm, arm_thickness_mm, a0_mm, "
+                      "length_mm); files relative to the manifest: R(delta) tables, raw test "
+                      "records, or folders of DIC sets (frames named by DIC/Frames and the "
+                      "machine record by Test/Files inside each folder).");
     prm.declare_entry("Bootstrap samples", "1000", dealii::Patterns::Integer(0, 1000000),
                       "Resamples of whole specimens within each group (0: no intervals).");
     prm.declare_entry("Seed", "1", dealii::Patterns::Integer(0, 2147483647),
@@ -177,7 +184,18 @@ struct CampaignInputs {
   CampaignSection section;
   analysis::CampaignOptions options;
   analysis::RawRecordOptions raw;
+  /// The test records the DIC sets made (dic_record.csv's text), by manifest line: written
+  /// beside the tables as campaign_dic_<material>_c<cycles>_<specimen>.csv.
+  std::shared_ptr<std::map<std::size_t, std::pair<std::string, std::string>>> dic_records =
+      std::make_shared<std::map<std::size_t, std::pair<std::string, std::string>>>();
 };
+
+std::string file_stem(const std::string& text) {
+  std::string o;
+  for (char c : text)
+    o += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
+  return o;
+}
 
 CampaignInputs campaign_inputs(SceneContext& ctx) {
   CampaignInputs in;
@@ -209,98 +227,96 @@ CampaignInputs campaign_inputs(SceneContext& ctx) {
   in.raw.reduce.large_displacement_correction = t.large_displacement_correction;
   in.raw.reduce.plateau_fraction = t.plateau_fraction;
   in.raw.reduce.smoothing_window = t.smoothing_window > 0 ? t.smoothing_window : NAN;
+  // DIC sets (a row naming a folder): the DIC step with the DIC section, then read as a record
+  // dic hands reduce (campaign_dic.h).
+  CampaignDicSets sets;
+  sets.dic = ctx.parameters().section<DicSection>("DIC");
+  sets.test = t;
+  sets.read = in.raw.read;
+  sets.scene_initial_crack = s.initial_crack;
+  in.raw.dic_set = [sets, texts = in.dic_records](const analysis::CampaignRow& row) {
+    std::string text;
+    auto record = read_campaign_dic_set(row, sets, text);
+    (*texts)[row.line] = {"campaign_dic_" + file_stem(row.material) + "_c" + fmt(row.cycles) + "_" +
+                              file_stem(row.specimen) + ".csv",
+                          text};
+    return record;
+  };
   return in;
 }
 
-// A group's bootstrap as text for the task distributor: every double printed to round trip
-// exactly (%.17g; NaN as "nan"), so the gathered groups equal the ones a single rank computes.
-std::string encode_group(const analysis::CampaignGroup& g) {
-  std::string s;
-  char buf[64];
-  auto put = [&](double v) {
-    std::snprintf(buf, sizeof buf, "%.17g ", v);
-    s += buf;
-  };
-  s += std::to_string(g.samples.size()) + " " + std::to_string(g.failed_samples) + " ";
-  for (const auto& row : g.samples)
-    for (double v : row)
-      put(v);
-  for (const auto& i : g.ci) {
-    put(i.lo);
-    put(i.hi);
-  }
-  s += std::to_string(g.law_delta.size()) + " ";
-  for (std::size_t i = 0; i < g.law_delta.size(); ++i) {
-    put(g.law_delta[i]);
-    put(g.law_lo[i]);
-    put(g.law_hi[i]);
-  }
-  s += std::to_string(g.notes.size()) + "\n";
-  for (const auto& n : g.notes)
-    s += n + "\n";
-  return s;
-}
-
-void decode_group(const std::string& text, analysis::CampaignGroup& g) {
-  std::istringstream in(text);
-  auto get = [&] {
-    std::string w;
-    in >> w;
-    return std::strtod(w.c_str(), nullptr);
-  };
-  std::size_t ns = 0, nb = 0, nn = 0;
-  in >> ns >> g.failed_samples;
-  g.samples.assign(ns, {});
-  for (auto& row : g.samples)
-    for (double& v : row)
-      v = get();
-  for (auto& i : g.ci) {
-    i.lo = get();
-    i.hi = get();
-  }
-  in >> nb;
-  g.law_delta.resize(nb);
-  g.law_lo.resize(nb);
-  g.law_hi.resize(nb);
-  for (std::size_t i = 0; i < nb; ++i) {
-    g.law_delta[i] = get();
-    g.law_lo[i] = get();
-    g.law_hi[i] = get();
-  }
-  in >> nn;
-  std::string line;
-  std::getline(in, line);
-  g.notes.clear();
-  for (std::size_t i = 0; i < nn && std::getline(in, line); ++i)
-    g.notes.push_back(line);
-}
-
-/// Groups as tasks over the ranks of the simulation communicator; every rank gets every group.
-void run_groups_across_ranks(std::vector<analysis::CampaignGroup>& groups,
-                             const std::vector<analysis::CampaignSpecimen>& specimens,
-                             const analysis::CampaignOptions& o,
-                             const analysis::CampaignProgress& progress) {
-  MPI_Comm comm = simulation_communicator();
-  std::vector<double> cost;
-  for (const auto& g : groups)
-    cost.push_back(static_cast<double>(g.members.size()));
-  const auto results = run_tasks_across_ranks(
-      groups.size(),
-      [&](std::size_t i) {
-        analysis::CampaignGroup g = groups[i];
-        analysis::analyse_campaign_group(g, specimens, o);
-        return encode_group(g);
-      },
-      comm, cost);
+/// Every group: restored from its record when resuming (campaign_resume.h), else analysed and
+/// kept as it finishes. On N ranks the groups still to do run as tasks over the ranks of the
+/// simulation communicator (the rank that runs a group keeps its record); every rank gets every
+/// group. The point estimate is recomputed for a restored or gathered group (deterministic, a
+/// fraction of the bootstrap's cost) rather than stored: it carries the averaged curve and the
+/// laws the writers need.
+void run_groups(std::vector<analysis::CampaignGroup>& groups,
+                const std::vector<analysis::CampaignSpecimen>& specimens,
+                const analysis::CampaignOptions& o, const analysis::CampaignProgress& progress,
+                const SceneContext& ctx, const Fingerprint& scene) {
+  std::vector<Fingerprint> inputs;
+  std::vector<bool> restored(groups.size(), false);
   for (std::size_t i = 0; i < groups.size(); ++i) {
-    // The point estimate is recomputed here (deterministic, a fraction of the bootstrap's cost)
-    // rather than shipped: it carries the averaged curve and the laws the writers need.
+    inputs.push_back(campaign_group_inputs(scene, groups[i], specimens));
+    analysis::CampaignGroup kept = groups[i];
+    if (restore_campaign_group(ctx.output_dir, ctx.resume, inputs[i], kept)) {
+      groups[i] = kept;
+      restored[i] = true;
+    }
+  }
+  auto finish = [&](std::size_t i) {
     auto& g = groups[i];
     g.estimate = analysis::estimate_group(specimens, g.members, o, true);
     g.seed = analysis::group_seed(o.seed, g.material, g.cycles);
-    decode_group(results.output[i], g);
+    if (output_enabled())
+      std::cerr << "campaign: resume: group " << g.material << " at " << fmt(g.cycles)
+                << " cycles restored from " << campaign_group_record(ctx.output_dir, g) << "\n";
+  };
+  int ranks = 1;
+  MPI_Comm_size(simulation_communicator(), &ranks);
+  if (ranks == 1) {
+    for (std::size_t i = 0; i < groups.size(); ++i) {
+      if (restored[i]) {
+        finish(i);
+      } else {
+        analysis::analyse_campaign_group(groups[i], specimens, o);
+        keep_campaign_group(ctx.output_dir, inputs[i], groups[i]);
+      }
+      if (progress)
+        progress(i + 1, groups.size(), groups[i]);
+    }
+    return;
+  }
+  std::vector<std::size_t> todo;
+  std::vector<double> cost;
+  for (std::size_t i = 0; i < groups.size(); ++i)
+    if (!restored[i]) {
+      todo.push_back(i);
+      cost.push_back(static_cast<double>(groups[i].members.size()));
+    }
+  const auto results = run_tasks_across_ranks(
+      todo.size(),
+      [&](std::size_t k) {
+        analysis::CampaignGroup g = groups[todo[k]];
+        analysis::analyse_campaign_group(g, specimens, o);
+        const TaskOwnsItsFiles own; // its record, written by the rank that ran it
+        keep_campaign_group(ctx.output_dir, inputs[todo[k]], g);
+        return campaign_group_bytes(g);
+      },
+      simulation_communicator(), cost);
+  for (std::size_t k = 0; k < todo.size(); ++k) {
+    auto& g = groups[todo[k]];
+    g.estimate = analysis::estimate_group(specimens, g.members, o, true);
+    g.seed = analysis::group_seed(o.seed, g.material, g.cycles);
+    campaign_group_from_bytes(results.output[k],
+                              "campaign group from rank " + std::to_string(results.rank[k]), g);
+  }
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    if (restored[i])
+      finish(i);
     if (progress)
-      progress(i + 1, groups.size(), g);
+      progress(i + 1, groups.size(), groups[i]);
   }
 }
 
@@ -341,21 +357,35 @@ void run_campaign_item(SceneContext& ctx) {
   };
   int ranks = 1;
   MPI_Comm_size(simulation_communicator(), &ranks);
-  analysis::GroupRunner runner;
-  if (ranks > 1)
-    runner = &run_groups_across_ranks;
-  const auto result = analysis::analyse_campaign(manifest, in.raw, in.options,
-                                                 in.section.reference_materials, progress, runner);
+  // Each group is a unit of work for --resume (campaign_resume.h).
+  const Fingerprint scene = scene_fingerprint(ctx.parameters());
+  const analysis::GroupRunner runner = [&](std::vector<analysis::CampaignGroup>& groups,
+                                           const std::vector<analysis::CampaignSpecimen>& specimens,
+                                           const analysis::CampaignOptions& o,
+                                           const analysis::CampaignProgress& p) {
+    run_groups(groups, specimens, o, p, ctx, scene);
+  };
+  auto result = analysis::analyse_campaign(manifest, in.raw, in.options,
+                                           in.section.reference_materials, progress, runner);
   CampaignWriteOptions w;
   w.fe_export = in.section.fe_export;
   w.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (in.section.simulate)
     w.simulations = simulate_campaign_laws(ctx, result, in.section.model);
+  // A group whose specimens differ in geometry: the simulation says on which it ran.
+  for (const auto& sim : w.simulations)
+    for (auto& g : result.groups)
+      if (!sim.geometry_note.empty() && g.material == sim.material && g.cycles == sim.cycles)
+        g.notes.push_back(sim.geometry_note);
   // Everything is computed before the first file is written: a campaign that fails leaves no
   // table behind (and no summary.json, scene.cc).
   if (!w.simulations.empty())
     w.simulation_pngs = write_campaign_simulation_files(result, w.simulations, ctx.output_dir);
   write_campaign_outputs(result, w, ctx.output_dir, ctx.summary);
+  for (const auto& [line, file] : *in.dic_records) {
+    write_file_atomically(ctx.out(file.first), file.second);
+    ctx.summary["campaign"]["dic_records"].push_back(file.first);
+  }
   ctx.summary["campaign"]["ranks"] = ranks;
 }
 

@@ -267,6 +267,18 @@ TEST(CampaignManifest, BadManifestsNameTheLine) {
   expect_error(head, "no data rows");
   expect_error("file,material,cycles,specimen,delta_c_mm\nPVA_c0_s1.csv,PVA,0,a,-1\n",
                "m.csv:2: column delta_c_mm");
+  // The geometry columns: positive, a0 inside the length; read in mm.
+  expect_error("file,material,cycles,specimen,a0_mm\nPVA_c0_s1.csv,PVA,0,a,x\n",
+               "m.csv:2: column a0_mm");
+  expect_error("file,material,cycles,specimen,a0_mm,length_mm\nPVA_c0_s1.csv,PVA,0,a,150,120\n",
+               "m.csv:2: a0_mm must be shorter than length_mm");
+  write(d / "m.csv", "file,material,cycles,specimen,width_mm,arm_thickness_mm,a0_mm,length_mm\n"
+                     "PVA_c0_s1.csv,PVA,0,a,25,2.7,40,\n");
+  const auto m = read_campaign_manifest((d / "m.csv").string());
+  EXPECT_DOUBLE_EQ(m.rows[0].width, 25e-3);
+  EXPECT_DOUBLE_EQ(m.rows[0].arm_thickness, 2.7e-3);
+  EXPECT_DOUBLE_EQ(m.rows[0].initial_crack, 40e-3);
+  EXPECT_TRUE(std::isnan(m.rows[0].length)); // empty cell: the scene's Specimen
 }
 
 // A group of one specimen has no interval (said so), a material with two cycle counts no slope

@@ -22,10 +22,22 @@ for f in campaign_table1.csv campaign_groups.csv campaign_degradation.csv \
          $([ $sim = true ] && echo campaign_fig10_PVA_c0.csv campaign_fig10_DF_c24.csv); do
   cmp -s "$work/c1/$f" "$work/c2/$f" || { diff "$work/c1/$f" "$work/c2/$f" | head; fail "$f differs"; }
 done
+# Resumed on 2 ranks (item 6): stopped after the PVA groups (their records only), continued with
+# --resume: the restored and the recomputed groups give the one-process tables.
+find "$work/c2" -mindepth 1 -maxdepth 1 ! -name resume -exec rm -rf {} +
+find "$work/c2/resume" -type f ! -name '*_PVA_*' -delete
+"$mpiexec" -np 2 --oversubscribe "$bin" run "$scene" --set "Output directory=$work/c2" \
+  --set "Campaign/Bootstrap samples=100" --set "Campaign/Simulate laws=$sim" --resume \
+  > "$work/c2r.log" 2>&1 || { cat "$work/c2r.log"; fail "campaign resumed on 2 ranks"; }
+[ "$(grep -c 'campaign: resume: group' "$work/c2r.log")" = 4 ] || { cat "$work/c2r.log"; fail "4 PVA groups restored"; }
+for f in campaign_table1.csv campaign_groups.csv campaign_law_PVA_c0.csv \
+         $([ $sim = true ] && echo campaign_fig10_PVA_c0.csv campaign_fig10_DF_c24.csv); do
+  cmp -s "$work/c1/$f" "$work/c2/$f" || { diff "$work/c1/$f" "$work/c2/$f" | head; fail "$f differs after --resume on 2 ranks"; }
+done
 python3 - "$work/c2/summary.json" <<'PY' || fail "summary"
 import json, sys
 s = json.load(open(sys.argv[1]))["campaign"]
 assert s["ranks"] == 2, s["ranks"]
 assert s["ranking"] == ["PF", "EPI", "PRF", "PVA"], s["ranking"]
 PY
-echo "campaign ok: the same tables on 1 and 2 ranks (laws simulated: $sim)"
+echo "campaign ok: the same tables on 1 and 2 ranks, and resumed on 2 ranks (laws simulated: $sim)"

@@ -21,18 +21,28 @@ constexpr double E = 12e9, B = 0.02, h_arm = 0.005, a0 = 0.05, R = 300;
 double crack(double t) {
   return t < 8 ? a0 : a0 + 0.5e-3 * (t - 8);
 }
-double load(double t) {
+/// R at crack length a: R, plus `bridging` J/m^2 rising with the notch-root opening the frames
+/// give (delta_root = A (a - a0)^2, SyntheticDcb with A = 1.2/m), 1 - exp(-delta_root / 0.04 mm):
+/// a bridged crack (0: the constant R of the tests above).
+double resistance(double a, double bridging) {
+  const double delta_root = 1.2 * (a - a0) * (a - a0);
+  return R + bridging * (1 - std::exp(-delta_root / 0.04e-3));
+}
+double load(double t, double bridging = 0) {
   const double a = crack(t);
-  const double p_growth = std::sqrt(R * E * B * B * h_arm * h_arm * h_arm / (12 * a * a));
+  const double p_growth =
+      std::sqrt(resistance(a, bridging) * E * B * B * h_arm * h_arm * h_arm / (12 * a * a));
   return t < 8 ? p_growth * t / 8 : p_growth;
 }
-double opening(double t) {
+double opening(double t, double bridging = 0) {
   const double a = crack(t);
-  return 8 * a * a * a / (E * B * h_arm * h_arm * h_arm) * load(t);
+  return 8 * a * a * a / (E * B * h_arm * h_arm * h_arm) * load(t, bridging);
 }
 
-/// Writes the frames (1 Hz from t = 0 to 40 s) and the machine record (10 Hz) into `dir`.
-void write_test(const fs::path& dir) {
+/// Writes the frames (1 Hz from t = 0 to 40 s) and the machine record (10 Hz) into `dir`; `seed`
+/// seeds the frames' noise (another specimen of the same test), `bridging` makes R rise
+/// (resistance).
+void write_test(const fs::path& dir, unsigned seed = 100, double bridging = 0) {
   fs::create_directories(dir / "frames");
   SyntheticDcb dcb;
   dcb.noise_v = 1e-6;
@@ -47,12 +57,13 @@ void write_test(const fs::path& dir) {
     char name[64];
     std::snprintf(name, sizeof name, "dcb_%04d_0.csv", k);
     write_frame((dir / "frames" / name).string(),
-                dcb.frame(crack(k) - a0, std::min(1.0, (k + 1) / 8.0), 100u + k), g, Out::vic);
+                dcb.frame(crack(k) - a0, std::min(1.0, (k + 1) / 8.0), seed + k), g, Out::vic);
   }
   std::ofstream m(dir / "machine.csv");
   m << "Time (s),Extension (mm),Load (N)\n";
   for (int i = 0; i <= 405; ++i)
-    m << 0.1 * i << "," << opening(0.1 * i) * 1e3 << "," << load(0.1 * i) << "\n";
+    m << 0.1 * i << "," << opening(0.1 * i, bridging) * 1e3 << "," << load(0.1 * i, bridging)
+      << "\n";
 }
 
 const char* scene = R"(set Output directory = out
@@ -162,4 +173,85 @@ TEST(AppDic, BadInputFailsCleanly) {
   err2 << in2.rdbuf();
   EXPECT_NE(err2.str().find("dcb_0041_0.csv:1: missing column 'eyy'"), std::string::npos)
       << err2.str();
+}
+
+// DIC sets in a campaign's manifest (issue 33 item 1): three specimens, each a folder with its
+// frames and machine record (the generator above, other noise seeds, R rising from 300 to 500
+// J/m^2 over the first mm of growth), run through the DIC step with the DIC section's settings and
+// reduced as raw records into one group with a law; a DIC set beside an R(delta) table in one
+// group is refused naming both lines (one group, one kind of input).
+TEST(AppDic, CampaignManifestTakesDicSets) {
+  const fs::path dir = work("dic_campaign");
+  fs::remove_all(dir);
+  for (int k = 1; k <= 3; ++k)
+    write_test(dir / ("set" + std::to_string(k)), 100u * k, 200);
+  // J_tip and delta_c per row (the seed fixed delta_c per material): the DIC rule's tip lag
+  // (docs/dic_tip_rule.md) and the direct-energy window put the first R(delta_root) readings on
+  // the plateau already (R within 3 % of 490 J/m^2 from delta_root = 0.017 mm on), so no
+  // initiation can be read off the curve, and the 41 frames' direct energy wobbles by 2 % at the
+  // end, above the automatic steady-state band.
+  std::ofstream(dir / "manifest.csv")
+      << "file,material,cycles,specimen,j_tip_J_m2,delta_c_mm\n"
+         "set1,X,0,s1,300,0.2\nset2,X,0,s2,300,0.2\nset3,X,0,s3,300,0.2\n";
+  // The scene of the tests above (the DIC section's settings; Test/Files and Frames now inside
+  // each set's folder) running the campaign instead of dic, reduce.
+  std::string campaign = scene;
+  campaign.replace(campaign.find("set Run = dic, reduce"), 21, "set Run = campaign");
+  campaign += "subsection Campaign\n  set Manifest = manifest.csv\n  set Bootstrap samples = 50\n"
+              "  set Reference materials =\nend\n"
+              "subsection Fit\n  set Delta 1 = 0.02\n  set Delta 2 = 0.08\nend\n";
+  std::ofstream(dir / "scene.prm") << campaign;
+  const std::string cmd = "cd '" + dir.string() + "' && '" + FIBERBRIDGE_BIN +
+                          "' run scene.prm > stdout.txt 2> stderr.txt";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << "see " << (dir / "stderr.txt");
+  const Json s = read_json(dir / "out" / "summary.json")["campaign"];
+  ASSERT_EQ(s["groups"].size(), 1u);
+  const auto& g = s["groups"][0];
+  EXPECT_EQ(g["n_specimens"], 3);
+  // The specimens' input kind is the DIC set, each with its record beside the tables.
+  const CsvTable spec = CsvTable::read((dir / "out" / "campaign_specimens.csv").string());
+  ASSERT_EQ(spec.n_rows(), 3u);
+  for (int k = 1; k <= 3; ++k)
+    EXPECT_TRUE(fs::exists(dir / "out" / ("campaign_dic_X_c0_s" + std::to_string(k) + ".csv")));
+  // Each record is the one `dic, reduce` reads (same rows as SceneRunsDicThenReduceOnItsRecord:
+  // one per frame inside the machine's 0-40.5 s, a from a0 = 50 mm).
+  const CsvTable rec = CsvTable::read((dir / "out" / "campaign_dic_X_c0_s2.csv").string());
+  EXPECT_EQ(rec.n_rows(), 41u);
+  EXPECT_DOUBLE_EQ(rec.numeric("a_mm").front(), 50);
+  // Initiation and plateau: the model's 300 and 500 J/m^2 (R's rise is complete to 0.05 % at the
+  // last frame's delta_root = 0.31 mm), 10 % as in the scene test above (the rule's tip noise and
+  // the frames' 1 s sampling of the load); the group has its law with intervals.
+  ASSERT_TRUE(g["G_ss_J_m2"].is_number()) << g.dump();
+  EXPECT_NEAR(g["G_ss_J_m2"].get<double>(), R + 200, 0.1 * (R + 200)) << g.dump();
+  EXPECT_NEAR(g["J_tip_J_m2"].get<double>(), R, 0.1 * R) << g.dump();
+  EXPECT_TRUE(g["trilinear"]["sigma1_kPa"].is_number()) << g.dump();
+  EXPECT_EQ(g["ci"]["G_ss_J_m2"].size(), 2u);
+
+  // One group, one kind of input: a DIC set beside an R(delta) table.
+  std::ofstream(dir / "manifest.csv")
+      << "file,material,cycles,specimen\nset1,X,0,s1\n"
+      << source("data/campaign_synthetic/PVA_c0_s1.csv") << ",X,0,s2\n";
+  fs::remove_all(dir / "out");
+  EXPECT_NE(std::system(cmd.c_str()), 0);
+  std::ifstream in(dir / "stderr.txt");
+  std::stringstream err;
+  err << in.rdbuf();
+  EXPECT_NE(err.str().find("manifest.csv:3"), std::string::npos) << err.str();
+  EXPECT_NE(err.str().find("manifest.csv:2"), std::string::npos) << err.str();
+  EXPECT_NE(err.str().find("one kind of input"), std::string::npos) << err.str();
+
+  // A DIC set needs DIC/Frames (inside each set's folder): said with the manifest line, no table.
+  std::ofstream(dir / "manifest.csv") << "file,material,cycles,specimen\nset1,X,0,s1\n";
+  std::string no_frames = campaign;
+  no_frames.replace(no_frames.find("set Frames = frames/dcb_*_0.csv"), 31, "set Frames =");
+  std::ofstream(dir / "scene.prm") << no_frames;
+  fs::remove_all(dir / "out");
+  EXPECT_NE(std::system(cmd.c_str()), 0);
+  std::ifstream in2(dir / "stderr.txt");
+  std::stringstream err2;
+  err2 << in2.rdbuf();
+  EXPECT_NE(err2.str().find("manifest.csv:2: DIC set 'set1': DIC/Frames must name the frames"),
+            std::string::npos)
+      << err2.str();
+  EXPECT_FALSE(fs::exists(dir / "out" / "campaign_table1.csv"));
 }

@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,8 +29,10 @@ struct CampaignRow {
   double cycles = 0;
   double delta_c = NAN;       ///< optional per-row delta_c [m]
   double j_tip = NAN;         ///< optional per-row J_tip [J/m^2]
-  double width = NAN;         ///< optional per-row width B [m] (raw records)
-  double arm_thickness = NAN; ///< optional per-row arm thickness h [m] (raw records)
+  double width = NAN;         ///< optional per-row width B [m]
+  double arm_thickness = NAN; ///< optional per-row arm thickness h [m]
+  double initial_crack = NAN; ///< optional per-row a0 from the load line [m]
+  double length = NAN;        ///< optional per-row specimen length [m]
   std::string manifest;       ///< the manifest file (for messages)
   std::size_t line = 0;       ///< its line in the manifest
   std::string where() const { return manifest + ":" + std::to_string(line); }
@@ -41,24 +44,31 @@ struct CampaignManifest {
 };
 
 /// Reads `file, material, cycles, specimen` (required) and `delta_c_mm, j_tip_J_m2, width_mm,
-/// arm_thickness_mm` (optional; an empty cell = not given). Paths are relative to the manifest's
-/// folder. Throws InputError naming manifest:line for: a missing column, an empty file, material
-/// or specimen, cycles not a number >= 0, a file that does not exist, a specimen (material,
-/// cycles, specimen) or a file listed twice, a given optional value that is not positive, and a
-/// manifest with no rows.
+/// arm_thickness_mm, a0_mm, length_mm` (optional; an empty cell = not given; the geometry where it
+/// differs from the scene's Specimen: raw records are reduced with it, and the group's Fig. 10
+/// simulation runs on it). Paths are relative to the manifest's folder; `file` is a file or, for a
+/// DIC set, a folder. Throws InputError naming manifest:line for: a missing column, an empty file,
+/// material or specimen, cycles not a number >= 0, a file that does not exist, a specimen
+/// (material, cycles, specimen) or a file listed twice, a given optional value that is not
+/// positive, and a manifest with no rows.
 CampaignManifest read_campaign_manifest(const std::string& path);
 
-/// What a row's file is: an R(delta) table (columns delta_mm, R_J_m2) or a raw test record.
-enum class SpecimenInput { rdelta, raw_record };
+/// What a row's file is: an R(delta) table (columns delta_mm, R_J_m2), a raw test record, or a
+/// DIC set (a folder: DIC frames and the testing machine's record).
+enum class SpecimenInput { rdelta, raw_record, dic_set };
 const char* to_string(SpecimenInput k);
-/// Decided from the header: delta_mm and R_J_m2 present -> rdelta, else raw_record.
+/// A folder -> dic_set; a file: delta_mm and R_J_m2 in its header -> rdelta, else raw_record.
 SpecimenInput classify_specimen_file(const std::string& path);
 
 /// How raw records are read and reduced (the scene's Test section and Specimen).
 struct RawRecordOptions {
   RecordReadOptions read;
-  TestSpecimen specimen; ///< per-row width / arm thickness override it
+  TestSpecimen specimen; ///< per-row width / arm thickness / length / a0 override it
   ReduceOptions reduce;
+  /// A DIC set's test record (its frames through the DIC step and matched to its machine record,
+  /// as `dic` hands `reduce` one); the app provides it (the dic library sits above analysis).
+  /// The record is then reduced as a raw record. Empty: DIC sets are refused.
+  std::function<TestRecord(const CampaignRow&)> dic_set;
 };
 
 /// One specimen as loaded: its R(delta_root) curve when it has one, else (a raw record without
