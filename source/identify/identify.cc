@@ -34,6 +34,11 @@ void IdentifySettings::validate(const std::string& c) const {
     throw InputError(c + "/Starts: need at least 1");
   if (!(relative_tolerance > 0 && relative_tolerance < 1))
     throw InputError(c + "/Tolerance: must be in (0, 1)");
+  if (start_j_tip > 0) {
+    const auto& l = start_law;
+    if (!(0 < l.d1 && l.d1 < l.d2 && l.d2 < l.dc && l.s1 > 0 && l.s2 > 0))
+      throw InputError(c + ": the start law needs 0 < d1 < d2 < delta_c and positive stresses");
+  }
   beam.validate(c);
 }
 
@@ -41,18 +46,21 @@ Identification identify_law(const std::vector<analysis::TestRecord>& records,
                             const specimen::Specimen& specimen, const specimen::Material& quoted,
                             const IdentifySettings& settings,
                             const std::function<void(const std::string&)>& progress,
-                            const IdentifyJobRunner& run_jobs) {
+                            const IdentifyJobRunner& run_jobs, const ForwardModel& forward) {
   const auto t0 = std::chrono::steady_clock::now();
   settings.validate();
   if (records.empty())
     throw InputError("Identify: no records to identify from");
-  const auto prepared = detail::prepare_records(records, specimen, quoted, settings, progress);
+  // The beam unless the caller hands another model (forward_model.h).
+  const ForwardModel model = forward.run ? forward : beam_forward_model(settings.beam);
+  const auto prepared =
+      detail::prepare_records(records, specimen, quoted, settings, model, progress);
   Identification out;
   detail::RunCounts counts; // over every job, in the serial order
   const detail::Parameters best =
-      detail::optimize(prepared, settings, progress, run_jobs, counts, out.notes);
+      detail::optimize(prepared, settings, model, progress, run_jobs, counts, out.notes);
   out.evaluations = counts.evaluations;
-  detail::estimate_uncertainty(prepared, settings, best, run_jobs, counts, out);
+  detail::estimate_uncertainty(prepared, settings, model, best, run_jobs, counts, out);
   // The misfit over all rows of all records, each record's RMS weighted by its rows.
   double sp = 0, sa = 0;
   std::size_t np = 0, na = 0;

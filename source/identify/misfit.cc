@@ -74,23 +74,17 @@ double Misfit::chi2(const Parameters& p) {
 void Misfit::simulate(const PreparedRecord& pr, const Parameters& p, std::vector<double>& load,
                       std::vector<double>& a, double& min_F) {
   const auto& rec = *pr.record;
-  beam::BeamParameters bp = settings_.beam;
-  const double a_last = pr.crack_estimate.back();
-  const double min_lig = bp.minimum_ligament > 0 ? bp.minimum_ligament : pr.specimen.height;
-  // Run a few advances past the last reading (the model may lag it), within the ligament.
-  bp.final_crack_length =
-      std::min(a_last + 5 * bp.tip_advance, pr.specimen.length - min_lig - 2 * bp.tip_advance);
   const auto t = std::chrono::steady_clock::now();
   ++forward_runs;
   try {
     const auto law = law::make_trilinear(trilinear_of(p));
-    auto run = beam::simulate_dcb(pr.specimen, pr.material, law, p[5], bp);
-    if (settings_.large_displacement)
+    auto run = forward_.run(pr.specimen, pr.material, law, p[5], pr.crack_estimate.back());
+    if (settings_.large_displacement && forward_.geometrically_linear)
       min_F = with_large_displacements(run, pr.specimen.arm_thickness());
     model_at_openings(run, rec.opening, load, a);
   } catch (const std::exception& e) {
-    // A law the beam cannot follow from initiation: the model carries no load, a large but
-    // finite misfit that keeps the optimizer's quadratic model usable.
+    // A law the model cannot follow from initiation (or, the FEM, resolve): the model carries no
+    // load, a large but finite misfit that keeps the optimizer's quadratic model usable.
     last_failure = e.what();
     load.assign(rec.opening.size(), 0.0);
     a.assign(rec.opening.size(), pr.specimen.initial_crack);

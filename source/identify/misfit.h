@@ -29,8 +29,9 @@ inline law::TrilinearParameters trilinear_of(const Parameters& p) {
 /// Misfit per job: the counts are the job's own (jobs.h sums them in the serial order).
 class Misfit {
 public:
-  Misfit(const std::vector<PreparedRecord>& records, const IdentifySettings& settings)
-      : records_(records), settings_(settings) {}
+  Misfit(const std::vector<PreparedRecord>& records, const IdentifySettings& settings,
+         const ForwardModel& forward)
+      : records_(records), settings_(settings), forward_(forward) {}
 
   /// Weighted residuals (load rows, then fresh crack readings, record after record); the model
   /// curves go to `fits` if given.
@@ -44,13 +45,14 @@ public:
   std::string last_failure;
 
 private:
-  /// The beam's P(opening) and a(opening) at the record's openings, mapped onto large
+  /// The forward model's P(opening) and a(opening) at the record's openings, mapped onto large
   /// displacements when asked (`min_F`: the smallest F over the run).
   void simulate(const PreparedRecord& pr, const Parameters& p, std::vector<double>& load,
                 std::vector<double>& a, double& min_F);
 
   const std::vector<PreparedRecord>& records_;
   const IdentifySettings& settings_;
+  const ForwardModel& forward_;
 };
 
 } // namespace fiberbridge::identify::detail

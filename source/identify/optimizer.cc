@@ -136,11 +136,12 @@ struct OptimizerRun {
 };
 
 std::string optimizer_job(const std::vector<PreparedRecord>& prepared,
-                          const IdentifySettings& settings, const Mapping& mapping,
+                          const IdentifySettings& settings, const ForwardModel& forward,
+                          const Mapping& mapping,
                           const std::function<void(const std::string&)>& progress,
                           const std::string& label, std::vector<double> u, double tolerance,
                           double initial_step) {
-  Misfit misfit(prepared, settings);
+  Misfit misfit(prepared, settings, forward);
   ObjectiveData data{&misfit,   &mapping, 0, std::numeric_limits<double>::infinity(),
                      &progress, label};
   nlopt::result code{};
@@ -166,6 +167,7 @@ OptimizerRun read_optimizer_run(const std::string& bytes, RunCounts& counts) {
 } // namespace
 
 Parameters optimize(const std::vector<PreparedRecord>& prepared, const IdentifySettings& settings,
+                    const ForwardModel& forward,
                     const std::function<void(const std::string&)>& progress,
                     const IdentifyJobRunner& run_jobs, RunCounts& counts,
                     std::vector<std::string>& notes) {
@@ -173,15 +175,21 @@ Parameters optimize(const std::vector<PreparedRecord>& prepared, const IdentifyS
   std::vector<double> best_u;
   double best_f = std::numeric_limits<double>::infinity();
   // Starts differ in delta_c (the parameter the record constrains least directly). They are
-  // independent: one job each.
+  // independent: one job each. A given start (IdentifySettings::start_law, near the optimum, e.g.
+  // the beam's for the FEM) is one start with the polish's small first step.
+  const bool given = settings.start_j_tip > 0;
+  const int n_starts = given ? 1 : settings.starts;
   const double dc_factors[] = {0.5, 1.5, 0.2, 3.0};
-  const auto starts = run_batch(run_jobs, "starts", settings.starts, [&](std::size_t s) {
+  const auto starts = run_batch(run_jobs, "starts", n_starts, [&](std::size_t s) {
     const Parameters p0 =
-        start_value(prepared, settings, dc_factors[s % 4] * (1 + static_cast<int>(s) / 4));
-    return optimizer_job(prepared, settings, mapping, progress, "start " + std::to_string(s + 1),
-                         mapping.normalized(p0), settings.relative_tolerance, 0.1);
+        given ? Parameters{settings.start_law.d1, settings.start_law.s1, settings.start_law.d2,
+                           settings.start_law.s2, settings.start_law.dc, settings.start_j_tip}
+              : start_value(prepared, settings, dc_factors[s % 4] * (1 + static_cast<int>(s) / 4));
+    return optimizer_job(prepared, settings, forward, mapping, progress,
+                         "start " + std::to_string(s + 1), mapping.normalized(p0),
+                         settings.relative_tolerance, given ? 0.02 : 0.1);
   });
-  for (int s = 0; s < settings.starts; ++s) {
+  for (int s = 0; s < n_starts; ++s) {
     const OptimizerRun run = read_optimizer_run(starts[s], counts);
     notes.push_back("start " + std::to_string(s + 1) + ": NLopt " + settings.algorithm +
                     " stopped with code " + std::to_string(run.code) + " at chi^2 " + fmt(run.f));
@@ -198,7 +206,7 @@ Parameters optimize(const std::vector<PreparedRecord>& prepared, const IdentifyS
   constexpr int kPolishRounds = 4;
   for (int round = 0; round < kPolishRounds; ++round) {
     const auto polished = run_batch(run_jobs, "polish", 1, [&](std::size_t) {
-      return optimizer_job(prepared, settings, mapping, progress,
+      return optimizer_job(prepared, settings, forward, mapping, progress,
                            "polish " + std::to_string(round + 1), best_u,
                            0.1 * settings.relative_tolerance, 0.02);
     });

@@ -14,6 +14,7 @@ namespace fiberbridge::identify::detail {
 /// appends a note (its NLopt stop, its chi^2) to `notes` and its forward-run counts to `counts`,
 /// in the serial order.
 Parameters optimize(const std::vector<PreparedRecord>& prepared, const IdentifySettings& settings,
+                    const ForwardModel& forward,
                     const std::function<void(const std::string&)>& progress,
                     const IdentifyJobRunner& run_jobs, RunCounts& counts,
                     std::vector<std::string>& notes);

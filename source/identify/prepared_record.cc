@@ -52,7 +52,7 @@ std::vector<double> crack_estimate(const analysis::TestRecord& rec, const Prepar
 std::vector<PreparedRecord>
 prepare_records(const std::vector<analysis::TestRecord>& records,
                 const specimen::Specimen& specimen, const specimen::Material& quoted,
-                const IdentifySettings& settings,
+                const IdentifySettings& settings, const ForwardModel& forward,
                 const std::function<void(const std::string&)>& progress) {
   std::vector<PreparedRecord> prepared;
   for (const auto& rec : records) {
@@ -67,8 +67,15 @@ prepare_records(const std::vector<analysis::TestRecord>& records,
     pr.material = quoted;
     pr.peak_load = *std::max_element(rec.load.begin(), rec.load.end());
     pr.compliance = initial_compliance(rec, settings);
-    if (settings.calibrate_modulus)
+    if (settings.calibrate_modulus) {
       pr.material.E_L = modulus_for_compliance(pr.specimen, quoted, pr.compliance);
+      // A forward model with its own compliance: from CBT's modulus, fixed-point passes on
+      // E_L C_model(E_L) = E_L' C (bending dominates: C ~ 1/E_L, so each pass takes most of the
+      // remaining ratio; three leave it well under the load scatter).
+      if (forward.initial_compliance)
+        for (int pass = 0; pass < 3; ++pass)
+          pr.material.E_L *= forward.initial_compliance(pr.specimen, pr.material) / pr.compliance;
+    }
     auto rows = analysis::crack_reading_rows(rec);
     // Rows without a reading are NaN (test_record.h): never a reading.
     rows.erase(std::remove_if(rows.begin(), rows.end(),

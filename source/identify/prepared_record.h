@@ -32,7 +32,7 @@ double first_reading(const analysis::TestRecord& rec);
 std::vector<PreparedRecord>
 prepare_records(const std::vector<analysis::TestRecord>& records,
                 const specimen::Specimen& specimen, const specimen::Material& quoted,
-                const IdentifySettings& settings,
+                const IdentifySettings& settings, const ForwardModel& forward,
                 const std::function<void(const std::string&)>& progress);
 
 } // namespace fiberbridge::identify::detail

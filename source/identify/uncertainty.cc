@@ -13,15 +13,15 @@
 namespace fiberbridge::identify::detail {
 
 void estimate_uncertainty(const std::vector<PreparedRecord>& prepared,
-                          const IdentifySettings& settings, const Parameters& best,
-                          const IdentifyJobRunner& run_jobs, RunCounts& counts,
-                          Identification& out) {
+                          const IdentifySettings& settings, const ForwardModel& forward,
+                          const Parameters& best, const IdentifyJobRunner& run_jobs,
+                          RunCounts& counts, Identification& out) {
   // Uncertainty: Jacobian of the weighted residuals by central differences (2 % steps: the
   // beam's discrete advances make the misfit piecewise smooth below about 1 %). Job 0 is the
   // optimum itself (with the model curves), jobs 2j+1 and 2j+2 parameter j up and down.
   const auto jacobian_runs =
       run_batch(run_jobs, "jacobian", 1 + 2 * n_parameters, [&](std::size_t k) {
-        Misfit misfit(prepared, settings);
+        Misfit misfit(prepared, settings, forward);
         ByteWriter w;
         if (k == 0) {
           std::vector<RecordFit> fits;

@@ -12,8 +12,8 @@ namespace fiberbridge::identify::detail {
 /// standard error, the band, and notes on unidentifiable combinations. Adds the jobs' forward-run
 /// counts to `counts`.
 void estimate_uncertainty(const std::vector<PreparedRecord>& prepared,
-                          const IdentifySettings& settings, const Parameters& best,
-                          const IdentifyJobRunner& run_jobs, RunCounts& counts,
-                          Identification& out);
+                          const IdentifySettings& settings, const ForwardModel& forward,
+                          const Parameters& best, const IdentifyJobRunner& run_jobs,
+                          RunCounts& counts, Identification& out);
 
 } // namespace fiberbridge::identify::detail
