@@ -5,6 +5,8 @@
 // counts summed in the serial order whatever ran where.
 #include "misfit.h"
 
+#include "fiberbridge/core/binary_archive.h"
+
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -13,66 +15,39 @@
 
 namespace fiberbridge::identify::detail {
 
-/// A job's result as bytes (IdentifyJobRunner): doubles and integers copied bit for bit, so a
-/// result computed in another process is the one this process would have computed.
+/// A job's result as bytes (IdentifyJobRunner), on core/binary_archive.h (the one byte codec of
+/// the project, as the resume store's): doubles and integers copied bit for bit, so a result
+/// computed in another process is the one this process would have computed. The header and the
+/// checksum make a result of another layout or a damaged one an error, never a wrong answer.
+inline constexpr const char* kJobMagic = "fiberbridge identify job";
+inline constexpr std::uint32_t kJobVersion = 1;
+
 class ByteWriter {
 public:
-  void number(double v) { put(v); }
-  void integer(std::int64_t v) { put(v); }
-  void text(const std::string& v) {
-    integer(static_cast<std::int64_t>(v.size()));
-    bytes += v;
-  }
-  void numbers(const std::vector<double>& v) {
-    integer(static_cast<std::int64_t>(v.size()));
-    bytes.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
-  }
-  std::string bytes;
+  void number(double v) { w_.put(v); }
+  void integer(std::int64_t v) { w_.put(v); }
+  void text(const std::string& v) { w_.put(v); }
+  void numbers(const std::vector<double>& v) { w_.put(v); }
+  /// The finished bytes (header, values, checksum).
+  std::string bytes() const { return w_.finish(); }
 
 private:
-  template <class T>
-  void put(const T& v) {
-    bytes.append(reinterpret_cast<const char*>(&v), sizeof(T));
-  }
+  BinaryWriter w_{kJobMagic, kJobVersion};
 };
 
 class ByteReader {
 public:
-  explicit ByteReader(const std::string& b) : p_(b.data()), end_(b.data() + b.size()) {}
-  double number() { return take<double>(); }
-  std::int64_t integer() { return take<std::int64_t>(); }
-  std::string text() {
-    const auto n = static_cast<std::size_t>(integer());
-    need(n);
-    std::string v(p_, n);
-    p_ += n;
-    return v;
-  }
-  std::vector<double> numbers() {
-    const auto n = static_cast<std::size_t>(integer());
-    need(n * sizeof(double));
-    std::vector<double> v(n);
-    if (n)
-      std::memcpy(v.data(), p_, n * sizeof(double));
-    p_ += n * sizeof(double);
-    return v;
-  }
+  explicit ByteReader(const std::string& b)
+      : r_(b, kJobMagic, kJobVersion, "identify job result") {}
+  double number() { return r_.get<double>(); }
+  std::int64_t integer() { return r_.get<std::int64_t>(); }
+  std::string text() { return r_.get<std::string>(); }
+  std::vector<double> numbers() { return r_.get<std::vector<double>>(); }
+  /// Throws unless every byte was read.
+  void expect_end() const { r_.expect_end(); }
 
 private:
-  void need(std::size_t n) const {
-    if (static_cast<std::size_t>(end_ - p_) < n)
-      throw std::logic_error("identify: a job's result is shorter than its format");
-  }
-  template <class T>
-  T take() {
-    need(sizeof(T));
-    T v;
-    std::memcpy(&v, p_, sizeof(T));
-    p_ += sizeof(T);
-    return v;
-  }
-  const char* p_;
-  const char* end_;
+  BinaryReader r_;
 };
 
 /// A record's fit as bytes and back (the Jacobian's job 0 carries the model curves).

@@ -151,7 +151,7 @@ std::string optimizer_job(const std::vector<PreparedRecord>& prepared,
   w.integer(static_cast<int>(code));
   w.numbers(u);
   RunCounts::write(w, misfit, data.evaluations);
-  return w.bytes;
+  return w.bytes();
 }
 
 OptimizerRun read_optimizer_run(const std::string& bytes, RunCounts& counts) {
@@ -161,6 +161,7 @@ OptimizerRun read_optimizer_run(const std::string& bytes, RunCounts& counts) {
   run.code = static_cast<int>(r.integer());
   run.u = r.numbers();
   counts.add(r);
+  r.expect_end();
   return run;
 }
 

@@ -40,7 +40,7 @@ void estimate_uncertainty(const std::vector<PreparedRecord>& prepared,
           w.numbers(misfit.residuals(p));
         }
         RunCounts::write(w, misfit, 0);
-        return w.bytes;
+        return w.bytes();
       });
   std::vector<std::vector<double>> residuals_of(jacobian_runs.size());
   for (std::size_t k = 0; k < jacobian_runs.size(); ++k) {
@@ -50,6 +50,7 @@ void estimate_uncertainty(const std::vector<PreparedRecord>& prepared,
       for (auto n = r.integer(); n > 0; --n)
         out.records.push_back(read_fit(r));
     counts.add(r);
+    r.expect_end();
   }
   const std::vector<double>& r0 = residuals_of[0];
   std::vector<std::vector<double>> jac(r0.size(), std::vector<double>(n_parameters));
