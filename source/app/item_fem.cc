@@ -7,6 +7,10 @@
 // spread over the ranks (task_distributor.h). Under mpirun every rank of that communicator runs
 // this item (the engine is collective); only its rank 0 prints progress, and the file writers are
 // switched off on the ranks that do not write (core/output_guard.h).
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+#include "fiberbridge/app/fem_forward_model.h"
+#endif
+#include "fiberbridge/app/items.h"
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/app/scene_context.h"
 #include "fiberbridge/app/section.h"
@@ -65,6 +69,12 @@ result::SimulationResult simulate_fem_law(SceneContext& ctx, const law::Traction
   return fem::simulate_dcb_distributed(ctx.specimen(), ctx.material(), law, j_tip, params, "", {},
                                        MPI_COMM_SELF);
 }
+
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+identify::ForwardModel identify_forward_fem(SceneContext& ctx) {
+  return fem_forward_model(fem_parameters(ctx));
+}
+#endif
 
 void run_fem_item(SceneContext& ctx) {
   const auto params = fem_parameters(ctx);

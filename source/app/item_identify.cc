@@ -6,6 +6,7 @@
 
 #include "fiberbridge/app/identify_resume.h"
 #include "fiberbridge/app/items.h"
+#include "fiberbridge/app/models.h"
 #include "fiberbridge/app/result_codec.h"
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/app/section.h"
@@ -13,6 +14,7 @@
 #include "fiberbridge/app/test_section.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/output_guard.h"
 #include "fiberbridge/core/plot.h"
 #include "fiberbridge/core/units.h"
@@ -38,6 +40,8 @@ using units::mm;
 /// Identify: the bounds, weights and optimizer of the identification and its beam forward model.
 struct IdentifySection : identify::IdentifySettings {
   bool per_record = false; ///< also identify each record alone
+  /// "beam" (identify's own) or a registered model offering identify_forward (models.h): "fem".
+  std::string forward_model = "beam";
 
   static void declare_parameters(dealii::ParameterHandler& prm) {
     prm.declare_entry("Delta c min", "0.2", Double(0), "Lower bound of delta_c (mm).");
@@ -71,6 +75,14 @@ struct IdentifySection : identify::IdentifySettings {
     prm.declare_entry("Tip advance", "1", Double(0), "Beam tip advance of the forward model (mm).");
     prm.declare_entry("Per record", "false", Bool(),
                       "Also identify each record alone (identify.per_record in summary.json).");
+    // Anything, checked in parse_parameters: the models that can serve are the registry's (a
+    // build without the FEM says so by name rather than by a pattern mismatch).
+    prm.declare_entry(
+        "Forward model", "beam", dealii::Patterns::Anything(),
+        "The simulation each trial law runs in: beam (identify's own, with Number of elements and "
+        "Tip advance above) or fem (the FEM section's settings, one mesh for every trial, each run "
+        "on one rank; started from the beam's identification, whose figures the notes give; "
+        "minutes per record with today's FEM, docs/verification.md).");
   }
   void parse_parameters(dealii::ParameterHandler& prm) {
     delta_c_min = prm.get_double("Delta c min") * mm;
@@ -91,7 +103,22 @@ struct IdentifySection : identify::IdentifySettings {
     beam.n_elements = prm.get_integer("Number of elements");
     beam.tip_advance = prm.get_double("Tip advance") * mm;
     per_record = prm.get_bool("Per record");
+    forward_model = prm.get("Forward model");
     validate("Identify");
+    if (forward_model != "beam") {
+      const SimulationModel* m = find_model(forward_model);
+      std::string offered = "beam";
+      for (const auto& model : simulation_models())
+        if (model.built && model.identify_forward)
+          offered += std::string(", ") + model.name;
+      if (m && !m->built)
+        throw InputError(
+            "Identify/Forward model: '" + forward_model +
+            "' is not built in this fiberbridge (FIBERBRIDGE_MODELS); offered: " + offered);
+      if (!m || !m->identify_forward)
+        throw InputError("Identify/Forward model: expected one of " + offered + ", got '" +
+                         forward_model + "'");
+    }
   }
 };
 
@@ -140,6 +167,42 @@ identify::IdentifyJobRunner jobs_across_ranks(Json* log, const std::string& fit)
   };
 }
 
+/// The forward model of Identify/Forward model: empty (identify's own beam) or the registry's.
+identify::ForwardModel forward_model_of(SceneContext& ctx, const IdentifySection& section) {
+  if (section.forward_model == "beam")
+    return {};
+  return find_model(section.forward_model)->identify_forward(ctx);
+}
+
+/// One fit of `records`. With a forward model other than the beam, the beam's identification
+/// first (seconds) and the other model's from its optimum (IdentifySettings::start_law): today's
+/// FEM costs about a second a run, so its search starts where the beam's ended and corrects the
+/// beam's model error (docs/design.md section 6, "Forward model of identify"). The beam route's
+/// figures go to the notes (they are kept for --resume with the fit).
+identify::Identification
+fit_records(const std::vector<analysis::TestRecord>& records, const specimen::Specimen& specimen,
+            const specimen::Material& quoted, const identify::IdentifySettings& settings,
+            const std::function<void(const std::string&)>& progress,
+            const identify::IdentifyJobRunner& jobs, const identify::ForwardModel& forward) {
+  if (!forward.run)
+    return identify::identify_law(records, specimen, quoted, settings, progress, jobs);
+  const auto beam = identify::identify_law(records, specimen, quoted, settings, progress, jobs);
+  identify::IdentifySettings from_beam = settings;
+  from_beam.start_law = beam.law;
+  from_beam.start_j_tip = beam.j_tip;
+  auto id = identify::identify_law(records, specimen, quoted, from_beam, progress, jobs, forward);
+  id.notes.insert(
+      id.notes.begin(),
+      "beam route (the " + forward.name + "'s start): chi^2 " + fmt(beam.chi2) + ", load RMS " +
+          fmt(100 * beam.load_rms_rel, 3) + " % of the peak, crack RMS " +
+          fmt(beam.crack_rms / mm, 3) + " mm, J_tip " + fmt(beam.j_tip, 4) + " J/m^2, G_ss " +
+          fmt(beam.g_ss, 4) + " J/m^2, d1 " + fmt(beam.law.d1 / mm, 4) + " mm, sigma1 " +
+          fmt(beam.law.s1 / kPa, 4) + " kPa, d2 " + fmt(beam.law.d2 / mm, 4) + " mm, sigma2 " +
+          fmt(beam.law.s2 / kPa, 4) + " kPa, delta_c " + fmt(beam.law.dc / mm, 4) + " mm; " +
+          std::to_string(beam.forward_runs) + " beam runs in " + fmt(beam.wall_time_s, 3) + " s");
+  return id;
+}
+
 /// The scene's fits (the joint one, then one per record with Identify/Per record), each restored
 /// from its record under --resume, else run; the fits still to run are spread over the ranks
 /// (docs/cluster.md, "identify"):
@@ -153,7 +216,8 @@ std::vector<identify::Identification>
 run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
                     const std::vector<std::vector<analysis::TestRecord>>& of,
                     const identify::IdentifySettings& settings, const specimen::Specimen& specimen,
-                    const specimen::Material& quoted, const Fingerprint& inputs, Json& tasks) {
+                    const specimen::Material& quoted, const identify::ForwardModel& forward,
+                    const Fingerprint& inputs, Json& tasks) {
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
   std::vector<std::optional<identify::Identification>> fits(units.size());
   std::vector<std::size_t> todo;
@@ -178,8 +242,8 @@ run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
         todo.size(),
         [&](std::size_t t) {
           const std::size_t i = todo[t];
-          const auto id = identify::identify_law(of[i], specimen, quoted, settings, progress,
-                                                 jobs_across_ranks(nullptr, units[i]));
+          const auto id = fit_records(of[i], specimen, quoted, settings, progress,
+                                      jobs_across_ranks(nullptr, units[i]), forward);
           const Json record = identification_to_record(id);
           keep_finished_unit(ctx.output_dir, units[i], inputs, record); // on rank 0 only
           return json_to_bytes(record);
@@ -199,8 +263,8 @@ run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
                    {"cpu_s", done.cpu_seconds}});
   } else {
     for (const auto i : todo) {
-      fits[i] = identify::identify_law(of[i], specimen, quoted, settings, progress,
-                                       jobs_across_ranks(&log, units[i]));
+      fits[i] = fit_records(of[i], specimen, quoted, settings, progress,
+                            jobs_across_ranks(&log, units[i]), forward);
       keep_finished_unit(ctx.output_dir, units[i], inputs, identification_to_record(*fits[i]));
     }
   }
@@ -213,7 +277,8 @@ run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
 } // namespace
 
 void check_identify_item(SceneContext& ctx) {
-  ctx.parameters().section<IdentifySection>("Identify");
+  // The forward model's own section is checked here too (the FEM's keys), before anything runs.
+  forward_model_of(ctx, ctx.parameters().section<IdentifySection>("Identify"));
   // The records are small: reading them is the check of Test. When reduce runs, it reads them
   // (its check has the Test section) and hands them on.
   if (!ctx.run_items.count("reduce"))
@@ -241,9 +306,12 @@ void run_identify_item(SceneContext& ctx) {
       of.push_back({records[k]});
     }
   Json tasks;
-  auto fits = run_or_restore_fits(ctx, units, of, settings, specimen, quoted, inputs, tasks);
+  const identify::ForwardModel forward = forward_model_of(ctx, section);
+  auto fits =
+      run_or_restore_fits(ctx, units, of, settings, specimen, quoted, forward, inputs, tasks);
   // Written: the summary block, the tables and plots (identify_writers.cc).
   ctx.summary["identify"] = identify_summary(fits, settings, quoted, records);
+  ctx.summary["identify"]["forward_model"] = section.forward_model;
   // Which rank ran which job (not part of the identification: the rest of the summary is the
   // same on 1 and N ranks).
   ctx.summary["identify_tasks"] = tasks;

@@ -34,7 +34,12 @@ const std::vector<SimulationModel>& simulation_models(){
 #endif
          "", "As Beam ladder, keys of the FEM section.", "Target error",
 #ifdef FIBERBRIDGE_HAVE_FEM
-         &simulate_fem_law},
+         &simulate_fem_law,
+#else
+         nullptr,
+#endif
+#if defined(FIBERBRIDGE_HAVE_FEM) && defined(FIBERBRIDGE_HAVE_IDENTIFY)
+         &identify_forward_fem},
 #else
          nullptr},
 #endif
@@ -46,9 +51,9 @@ const std::vector<SimulationModel>& simulation_models(){
 #endif
          100.0, false, nullptr, "", "As Beam ladder, keys of the MPM section.", "MPM target error",
 #ifdef FIBERBRIDGE_HAVE_MPM
-         &simulate_mpm_law},
+         &simulate_mpm_law, nullptr},
 #else
-         nullptr},
+         nullptr, nullptr},
 #endif
         {"beam", "Beam",
 #ifdef FIBERBRIDGE_HAVE_BEAM
@@ -61,9 +66,9 @@ const std::vector<SimulationModel>& simulation_models(){
          "together).",
          "Target error",
 #ifdef FIBERBRIDGE_HAVE_BEAM
-         &simulate_beam_law},
+         &simulate_beam_law, nullptr},
 #else
-         nullptr},
+         nullptr, nullptr},
 #endif
     };
 return models;

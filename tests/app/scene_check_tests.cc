@@ -148,3 +148,17 @@ TEST(SceneCheck, RenamedKeyGivenTwiceFailsBeforeTheFirstItem) {
       scene("beam, mpm", "--set 'MPM/Tip advance=5' --set 'MPM/Growth step=1'"),
       "MPM/Tip advance = 5 and MPM/Growth step = 1");
 }
+
+TEST(SceneCheck, BadIdentifyForwardModelFailsBeforeTheFirstItem) {
+#ifndef FIBERBRIDGE_HAVE_BEAM
+  GTEST_SKIP() << "beam module not built (identify needs it)";
+#endif
+  // Identify/Forward model takes the models that offer identify a forward run (beam, fem): a
+  // typo names the key before reduce (the first item) runs. The MPM is a model but not offered.
+  for (const char* bad : {"femm", "mpm"})
+    expect_rejected_before_running(std::string("check_identify_forward_") + bad,
+                                   "run " + source("prm/test_records.prm") +
+                                       " --set 'Run=reduce, identify' --set " +
+                                       "'Identify/Forward model=" + bad + "'",
+                                   "Identify/Forward model");
+}

@@ -3,6 +3,8 @@
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/identify/identify.h"
+// The private job codec (source/identify/jobs.h), for its round trip.
+#include "../../source/identify/jobs.h"
 #include "record_specimen.h"
 
 #include <gtest/gtest.h>
@@ -238,4 +240,73 @@ TEST(Identify, LoadAndOpeningAlone) {
   EXPECT_EQ(without.crack_rms, 0);
   EXPECT_LT(without.load_rms_rel, 0.04);
   EXPECT_NEAR(without.g_ss / with.g_ss, 1, 0.10);
+}
+
+// identify's job results on core/binary_archive (issue 30 item 4): a record's fit and a job's run
+// counts through the bytes and back, every double bit for bit (NaN crack rows included), and a
+// cut result an error rather than a wrong answer.
+TEST(Identify, JobBytesRoundTrip) {
+  using namespace fiberbridge::identify::detail;
+  RecordFit f;
+  f.name = "DCB-01 (a record)";
+  f.initial_crack = 35.1 * mm;
+  f.initial_compliance = 0.037 * mm;
+  f.E_L = 19.3e9;
+  f.peak_load = 96.5;
+  f.load_rms_rel = 0.0123;
+  f.crack_rms = 1.7 * mm;
+  f.max_opening_over_a = 0.41;
+  f.min_F = 0.93;
+  f.opening = {0, 0.1 * mm, 1.0 / 3.0};
+  f.load = {0, 12.5, -0.0};
+  f.crack_length = {35 * mm, NAN, 36 * mm};
+  f.model_load = {1e-300, 5e-324, 3.0};
+  f.model_crack_length = {};
+  const std::vector<PreparedRecord> prepared;
+  IdentifySettings settings;
+  const ForwardModel forward;
+  Misfit m(prepared, settings, forward);
+  m.forward_runs = 17;
+  m.forward_time_s = 0.1 + 0.2;
+  m.last_failure = "FEM forward run: steady_state_status zone_unresolved";
+  ByteWriter w;
+  write_fit(w, f);
+  RunCounts::write(w, m, 42);
+  const std::string bytes = w.bytes();
+
+  ByteReader r(bytes);
+  const RecordFit g = read_fit(r);
+  RunCounts counts;
+  counts.evaluations = 1;
+  counts.add(r);
+  r.expect_end();
+  auto same_all = [](const std::vector<double>& a, const std::vector<double>& b) {
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+  };
+  EXPECT_EQ(g.name, f.name);
+  for (auto [a, b] : {std::pair{g.initial_crack, f.initial_crack},
+                      {g.initial_compliance, f.initial_compliance},
+                      {g.E_L, f.E_L},
+                      {g.peak_load, f.peak_load},
+                      {g.load_rms_rel, f.load_rms_rel},
+                      {g.crack_rms, f.crack_rms},
+                      {g.max_opening_over_a, f.max_opening_over_a},
+                      {g.min_F, f.min_F}})
+    EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0);
+  EXPECT_TRUE(same_all(g.opening, f.opening));
+  EXPECT_TRUE(same_all(g.load, f.load)); // -0.0 keeps its sign bit
+  EXPECT_TRUE(same_all(g.crack_length, f.crack_length));
+  EXPECT_TRUE(same_all(g.model_load, f.model_load));
+  EXPECT_TRUE(same_all(g.model_crack_length, f.model_crack_length));
+  EXPECT_EQ(counts.evaluations, 43);
+  EXPECT_EQ(counts.forward_runs, 17);
+  EXPECT_EQ(counts.forward_time_s, m.forward_time_s);
+  EXPECT_EQ(counts.last_failure, m.last_failure);
+
+  // Cut short or damaged: an error naming the job result, never a silent value.
+  EXPECT_THROW(ByteReader(bytes.substr(0, bytes.size() - 9)), InputError);
+  std::string damaged = bytes;
+  damaged[damaged.size() / 2] ^= 0x10;
+  EXPECT_THROW(ByteReader{damaged}, InputError);
 }

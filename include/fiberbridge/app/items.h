@@ -2,6 +2,7 @@
 // Scene items: each declares its section and runs. The declare_*_section functions enter the
 // registry (scene.cc); each declares a step-44 section struct (section.h). The simulation items
 // live beside their libraries' owners (item_fem.cc, item_mpm.cc, item_beam.cc).
+#include "fiberbridge/app/models.h"
 #include "fiberbridge/app/scene_context.h"
 #ifdef FIBERBRIDGE_HAVE_BEAM
 #include "fiberbridge/beam/dcb_beam.h"
@@ -90,6 +91,10 @@ void run_fem_item(SceneContext& ctx);
 /// (MPI_COMM_SELF), no files (models.h).
 result::SimulationResult simulate_fem_law(SceneContext& ctx, const law::TractionLaw& law,
                                           double j_tip);
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+/// The FEM section as identify's forward model (models.h, app/fem_forward_model.h).
+identify::ForwardModel identify_forward_fem(SceneContext& ctx);
+#endif
 #endif
 #ifdef FIBERBRIDGE_HAVE_MPM
 void declare_mpm_section(dealii::ParameterHandler& prm);

@@ -5,6 +5,7 @@
 // hand-out, the text report, compare and study ask the registry; no other code names a model.
 // A fourth model: its library and item file, and one entry in models.cc.
 #include "fiberbridge/app/scene_context.h"
+#include "fiberbridge/identify/forward_model.h"
 
 #include <string>
 #include <vector>
@@ -38,6 +39,10 @@ struct SimulationModel {
   /// section, on this process alone, writing no files and reporting nothing: for items that put
   /// many laws back in the specimen (the campaign's Fig. 10). nullptr when not built.
   result::SimulationResult (*simulate)(SceneContext&, const law::TractionLaw&, double j_tip);
+  /// The model with its section's settings as identify's forward model (Identify/Forward model
+  /// = <name>; identify/forward_model.h, docs/design.md section 6, "Forward model of identify").
+  /// nullptr: not offered (the beam is identify's own, with the Identify section's beam keys).
+  identify::ForwardModel (*identify_forward)(SceneContext&);
 
   SceneItem item() const { return {name, declare, parse, check, run}; }
 };

@@ -7,6 +7,7 @@
 // residuals at the optimum.
 #include "fiberbridge/analysis/test_record.h"
 #include "fiberbridge/beam/dcb_beam.h"
+#include "fiberbridge/identify/forward_model.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
 #include "fiberbridge/specimen/specimen.h"
 
@@ -47,6 +48,12 @@ struct IdentifySettings {
     b.tip_advance = 1e-3;
     return b;
   }();
+  /// Start the optimizer from this law and J_tip (one start, a small first step) instead of the
+  /// starts from the records' corrected-beam-theory estimates: for a costly forward model started
+  /// at the beam's identification (docs/design.md section 6, "Forward model of identify").
+  /// start_j_tip 0: not set.
+  law::TrilinearParameters start_law{};
+  double start_j_tip = 0;
   /// Throws InputError naming `context`/<key> for an unusable value.
   void validate(const std::string& context = "Identify") const;
 };
@@ -140,10 +147,13 @@ std::vector<std::string> serial_jobs(const std::string& what, std::size_t n,
 /// `run_jobs` runs the independent forward runs (the optimizer starts, each polish round, the
 /// Jacobian's perturbed runs); the result is the same, bit for bit, whatever runner runs them
 /// where (each job's result crosses as raw bytes and the merge follows the serial order).
+/// `forward` runs each trial law (forward_model.h); empty (no `run`): the beam with
+/// settings.beam.
 Identification identify_law(const std::vector<analysis::TestRecord>& records,
                             const specimen::Specimen& specimen, const specimen::Material& quoted,
                             const IdentifySettings& settings,
                             const std::function<void(const std::string&)>& progress = {},
-                            const IdentifyJobRunner& run_jobs = {});
+                            const IdentifyJobRunner& run_jobs = {},
+                            const ForwardModel& forward = {});
 
 } // namespace fiberbridge::identify
