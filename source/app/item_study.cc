@@ -5,14 +5,15 @@
 // tables are the same as on one rank.
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/models.h"
-#include "fiberbridge/app/result_codec.h"
 #include "fiberbridge/app/resume_store.h"
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/app/section.h"
 #include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/json_archive.h"
 #include "fiberbridge/core/plot.h"
+#include "fiberbridge/result/result_archive.h"
 
 #include <deal.II/base/patterns.h>
 
@@ -28,6 +29,11 @@
 namespace fiberbridge::app {
 
 namespace {
+
+// What a study task's bytes hold (core/binary_archive.h): a ladder level's result, or a
+// stability case's row.
+const char* ladder_run_kind = "fiberbridge study ladder level";
+const char* stability_run_kind = "fiberbridge study stability case";
 
 /// The scene's parameters with a run's settings "Section/Key=value" applied to a copy: the
 /// scene's own parameters stay as they are (the later items and the other runs read them).
@@ -350,7 +356,7 @@ void run_study_item(SceneContext& ctx) {
         const std::string run = ladder.model + "_level" + std::to_string(l);
         return run_or_restore(
             ctx.output_dir, ctx.resume, "study_" + run, inputs, ctx.out("study/" + run),
-            [&] { return json_to_bytes(result_to_json(run_ladder_level(ctx, ladder, l))); });
+            [&] { return to_archive_bytes(run_ladder_level(ctx, ladder, l), ladder_run_kind); });
       });
       cost.push_back(std::pow(4.0, double(l)));
     }
@@ -365,8 +371,10 @@ void run_study_item(SceneContext& ctx) {
       TaskOwnsItsFiles own;
       const std::string run = "stability_" + c->name + "_" + model;
       return run_or_restore(
-          ctx.output_dir, ctx.resume, "study_" + run, inputs, ctx.out("study/" + run),
-          [&] { return json_to_bytes(run_stability_case(ctx, *c, model, plateau_tol)); });
+          ctx.output_dir, ctx.resume, "study_" + run, inputs, ctx.out("study/" + run), [&] {
+            return to_archive_bytes(run_stability_case(ctx, *c, model, plateau_tol),
+                                    stability_run_kind);
+          });
     });
     cost.push_back(1.0);
   }
@@ -414,7 +422,7 @@ void run_study_item(SceneContext& ctx) {
       };
       std::vector<Level> run_levels;
       for (std::size_t l = 0; l < ladder.levels; ++l, ++task) {
-        auto r = result_from_json(json_from_bytes(done.output[task]));
+        auto r = from_archive_bytes<result::SimulationResult>(done.output[task], ladder_run_kind);
         double peak = 0;
         for (const auto& p : r.rcurve)
           if (std::isfinite(p.load))
@@ -495,7 +503,7 @@ void run_study_item(SceneContext& ctx) {
                  "stop (the model said why it stopped) | suspect | failure"});
     Json rows = Json::array();
     for (std::size_t k = 0; k < case_runs.size(); ++k) {
-      Json row = json_from_bytes(done.output[first_case_task + k]);
+      Json row = from_archive_bytes<Json>(done.output[first_case_task + k], stability_run_kind);
       w.row({row["case"].get<std::string>(), row["model"].get<std::string>(),
              row["outcome"].get<std::string>(), row["diagnosis"].get<std::string>()},
             {row["wall_time_s"].get<double>()});
