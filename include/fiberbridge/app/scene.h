@@ -1,6 +1,8 @@
 #pragma once
 // Running a .prm scene (docs/design.md section 5): declare every section, parse the file (unknown
 // entries are errors), apply --set overrides, then run only the items listed in `Run`.
+#include "fiberbridge/core/format.h" // split_list, the lists of a scene
+
 #include <nlohmann/json.hpp>
 
 #include <memory>
@@ -35,10 +37,6 @@ struct SceneContext;
 /// apply their own overrides without touching the scene's (a study's ladder levels and stability
 /// cases).
 std::shared_ptr<dealii::ParameterHandler> copy_scene_parameters(const SceneContext& ctx);
-
-/// The items of a list as a scene writes them ("beam, fem"; "Key = 1, 2"), blanks around each
-/// item removed, empty items dropped.
-std::vector<std::string> split_list(const std::string& s, char separator);
 
 /// Writes the full documented parameter set (every section, defaults) to `out`.
 void print_scene_parameters(std::ostream& out);
