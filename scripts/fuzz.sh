@@ -12,7 +12,7 @@ seconds="${2:-60}"
 shift $(($# < 2 ? $# : 2))
 targets=("$@")
 [[ ${#targets[@]} -gt 0 ]] || targets=(csv_reader rdelta_reader law_points law_table table1_reader test_record_reader
-  scene_reader dic_frame_reader)
+  scene_reader dic_frame_reader archive_reader)
 findings="$build/fuzz/findings"
 mkdir -p "$findings"
 

@@ -4,6 +4,7 @@
 
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/exported_table.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 #include "record_cleaning.h"
 #include "record_columns.h"
@@ -18,13 +19,8 @@ namespace {
 const char* const our_columns[] = {"time_s", "opening_mm",    "load_N",
                                    "a_mm",   "delta_root_mm", "record"};
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos)
-    return "";
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
+/// A column map may come from a command line as well as a scene: line ends are blanks too.
+constexpr const char* map_blanks = " \t\r\n";
 
 std::string num(double v) {
   std::ostringstream s;
@@ -43,20 +39,15 @@ std::string stem(const std::string& path) {
 
 RecordColumnMap RecordColumnMap::parse(const std::string& text, const std::string& where_) {
   RecordColumnMap m;
-  if (trim(text).empty())
+  if (trim_blanks(text, map_blanks).empty())
     return m;
-  std::istringstream in(text);
-  std::string entry;
-  while (std::getline(in, entry, ',')) {
-    entry = trim(entry);
-    if (entry.empty())
-      continue;
+  for (const auto& entry : split_list(text, ',', map_blanks)) {
     const auto colon = entry.find(':');
     if (colon == std::string::npos)
       throw InputError(where_ + ": column map entry '" + entry +
                        "' has no ':'; expected 'our_name: File header', e.g. 'load_N: Load (N)'");
-    const std::string ours = trim(entry.substr(0, colon));
-    const std::string theirs = trim(entry.substr(colon + 1));
+    const std::string ours = trim_blanks(entry.substr(0, colon), map_blanks);
+    const std::string theirs = trim_blanks(entry.substr(colon + 1), map_blanks);
     if (std::find(std::begin(our_columns), std::end(our_columns), ours) == std::end(our_columns))
       throw InputError(where_ + ": column map names '" + ours +
                        "'; expected one of time_s, opening_mm, load_N, a_mm, delta_root_mm, "

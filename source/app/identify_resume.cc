@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-namespace fiberbridge::app {
+namespace fiberbridge {
 
 // Every field must be in the record: a field added to these structs without a line below would
 // come back empty from a resumed run. The sizes catch that at compile time (they hold for
@@ -12,106 +12,117 @@ namespace fiberbridge::app {
 #if defined(__GLIBCXX__) && defined(__x86_64__)
 static_assert(sizeof(identify::RecordFit) == 216 && sizeof(identify::ParameterEstimate) == 48 &&
                   sizeof(identify::Identification) == 312,
-              "identify.h changed: update identification_to_record/from_record "
+              "identify.h changed: update BinaryCodec<identify::Identification> "
               "(source/app/identify_resume.cc) and these sizes");
 #endif
 
 namespace {
 
-template <class T>
-Json vec(const std::vector<T>& v) {
-  return Json(v);
+// A record's fit and a parameter estimate are written only inside an identification: their
+// save/load pairs stay here, beside it.
+void save_fit(BinaryWriter& out, const identify::RecordFit& f) {
+  out.put(f.name);
+  out.put(f.initial_crack);
+  out.put(f.initial_compliance);
+  out.put(f.E_L);
+  out.put(f.peak_load);
+  out.put(f.load_rms_rel);
+  out.put(f.crack_rms);
+  out.put(f.max_opening_over_a);
+  out.put(f.min_F);
+  out.put(f.opening);
+  out.put(f.load);
+  out.put(f.crack_length);
+  out.put(f.model_load);
+  out.put(f.model_crack_length);
+}
+
+void load_fit(BinaryReader& in, identify::RecordFit& f) {
+  in.get(f.name);
+  in.get(f.initial_crack);
+  in.get(f.initial_compliance);
+  in.get(f.E_L);
+  in.get(f.peak_load);
+  in.get(f.load_rms_rel);
+  in.get(f.crack_rms);
+  in.get(f.max_opening_over_a);
+  in.get(f.min_F);
+  in.get(f.opening);
+  in.get(f.load);
+  in.get(f.crack_length);
+  in.get(f.model_load);
+  in.get(f.model_crack_length);
 }
 
 } // namespace
 
-Json identification_to_record(const identify::Identification& id) {
-  Json recs = Json::array();
+void BinaryCodec<identify::Identification>::save(BinaryWriter& out,
+                                                 const identify::Identification& id) {
+  out.put(id.law); // five doubles (law::TrilinearParameters), as their bytes
+  out.put(id.j_tip);
+  out.put(id.g_ss);
+  out.put(id.j_c_std_error);
+  out.put(static_cast<std::uint64_t>(id.records.size()));
   for (const auto& r : id.records)
-    recs.push_back({{"name", r.name},
-                    {"initial_crack", r.initial_crack},
-                    {"initial_compliance", r.initial_compliance},
-                    {"E_L", r.E_L},
-                    {"peak_load", r.peak_load},
-                    {"load_rms_rel", r.load_rms_rel},
-                    {"crack_rms", r.crack_rms},
-                    {"max_opening_over_a", r.max_opening_over_a},
-                    {"min_F", r.min_F},
-                    {"opening", vec(r.opening)},
-                    {"load", vec(r.load)},
-                    {"crack_length", vec(r.crack_length)},
-                    {"model_load", vec(r.model_load)},
-                    {"model_crack_length", vec(r.model_crack_length)}});
-  Json params = Json::array();
-  for (const auto& p : id.parameters)
-    params.push_back({{"name", p.name}, {"value", p.value}, {"std_error", p.std_error}});
-  return {{"law", {id.law.d1, id.law.s1, id.law.d2, id.law.s2, id.law.dc}},
-          {"j_tip", id.j_tip},
-          {"g_ss", id.g_ss},
-          {"j_c_std_error", id.j_c_std_error},
-          {"records", std::move(recs)},
-          {"load_rms_rel", id.load_rms_rel},
-          {"crack_rms", id.crack_rms},
-          {"chi2", id.chi2},
-          {"n_residuals", id.n_residuals},
-          {"evaluations", id.evaluations},
-          {"forward_runs", id.forward_runs},
-          {"forward_time_s", id.forward_time_s},
-          {"wall_time_s", id.wall_time_s},
-          {"parameters", std::move(params)},
-          {"correlation", id.correlation},
-          {"notes", id.notes},
-          {"band_delta", vec(id.band_delta)},
-          {"band_sigma", vec(id.band_sigma)},
-          {"band_lo", vec(id.band_lo)},
-          {"band_hi", vec(id.band_hi)}};
+    save_fit(out, r);
+  out.put(id.load_rms_rel);
+  out.put(id.crack_rms);
+  out.put(id.chi2);
+  out.put(static_cast<std::uint64_t>(id.n_residuals));
+  out.put(static_cast<std::int32_t>(id.evaluations));
+  out.put(static_cast<std::int32_t>(id.forward_runs));
+  out.put(id.forward_time_s);
+  out.put(id.wall_time_s);
+  out.put(static_cast<std::uint64_t>(id.parameters.size()));
+  for (const auto& p : id.parameters) {
+    out.put(p.name);
+    out.put(p.value);
+    out.put(p.std_error);
+  }
+  out.put(id.correlation);
+  out.put(id.notes);
+  out.put(id.band_delta);
+  out.put(id.band_sigma);
+  out.put(id.band_lo);
+  out.put(id.band_hi);
 }
 
-identify::Identification identification_from_record(const Json& j) {
-  identify::Identification id;
-  const auto& l = j.at("law");
-  id.law = {l.at(0).get<double>(), l.at(1).get<double>(), l.at(2).get<double>(),
-            l.at(3).get<double>(), l.at(4).get<double>()};
-  id.j_tip = j.at("j_tip").get<double>();
-  id.g_ss = j.at("g_ss").get<double>();
-  id.j_c_std_error = j.at("j_c_std_error").get<double>();
-  for (const auto& r : j.at("records")) {
-    identify::RecordFit f;
-    f.name = r.at("name").get<std::string>();
-    f.initial_crack = r.at("initial_crack").get<double>();
-    f.initial_compliance = r.at("initial_compliance").get<double>();
-    f.E_L = r.at("E_L").get<double>();
-    f.peak_load = r.at("peak_load").get<double>();
-    f.load_rms_rel = r.at("load_rms_rel").get<double>();
-    f.crack_rms = r.at("crack_rms").get<double>();
-    f.max_opening_over_a = r.at("max_opening_over_a").get<double>();
-    f.min_F = r.at("min_F").get<double>();
-    f.opening = r.at("opening").get<std::vector<double>>();
-    f.load = r.at("load").get<std::vector<double>>();
-    f.crack_length = r.at("crack_length").get<std::vector<double>>();
-    f.model_load = r.at("model_load").get<std::vector<double>>();
-    f.model_crack_length = r.at("model_crack_length").get<std::vector<double>>();
-    id.records.push_back(std::move(f));
+void BinaryCodec<identify::Identification>::load(BinaryReader& in, identify::Identification& id) {
+  in.get(id.law);
+  in.get(id.j_tip);
+  in.get(id.g_ss);
+  in.get(id.j_c_std_error);
+  // A fit takes at least its name's length and eight numbers: a count beyond the file is
+  // caught by the first read past its end.
+  id.records.resize(0);
+  for (auto n = in.get<std::uint64_t>(); n > 0; --n)
+    load_fit(in, id.records.emplace_back());
+  in.get(id.load_rms_rel);
+  in.get(id.crack_rms);
+  in.get(id.chi2);
+  id.n_residuals = static_cast<std::size_t>(in.get<std::uint64_t>());
+  id.evaluations = in.get<std::int32_t>();
+  id.forward_runs = in.get<std::int32_t>();
+  in.get(id.forward_time_s);
+  in.get(id.wall_time_s);
+  id.parameters.resize(0);
+  for (auto n = in.get<std::uint64_t>(); n > 0; --n) {
+    auto& p = id.parameters.emplace_back();
+    in.get(p.name);
+    in.get(p.value);
+    in.get(p.std_error);
   }
-  id.load_rms_rel = j.at("load_rms_rel").get<double>();
-  id.crack_rms = j.at("crack_rms").get<double>();
-  id.chi2 = j.at("chi2").get<double>();
-  id.n_residuals = j.at("n_residuals").get<std::size_t>();
-  id.evaluations = j.at("evaluations").get<int>();
-  id.forward_runs = j.at("forward_runs").get<int>();
-  id.forward_time_s = j.at("forward_time_s").get<double>();
-  id.wall_time_s = j.at("wall_time_s").get<double>();
-  for (const auto& p : j.at("parameters"))
-    id.parameters.push_back({p.at("name").get<std::string>(), p.at("value").get<double>(),
-                             p.at("std_error").get<double>()});
-  id.correlation = j.at("correlation").get<std::vector<std::vector<double>>>();
-  id.notes = j.at("notes").get<std::vector<std::string>>();
-  id.band_delta = j.at("band_delta").get<std::vector<double>>();
-  id.band_sigma = j.at("band_sigma").get<std::vector<double>>();
-  id.band_lo = j.at("band_lo").get<std::vector<double>>();
-  id.band_hi = j.at("band_hi").get<std::vector<double>>();
-  return id;
+  in.get(id.correlation);
+  in.get(id.notes);
+  in.get(id.band_delta);
+  in.get(id.band_sigma);
+  in.get(id.band_lo);
+  in.get(id.band_hi);
 }
+
+} // namespace fiberbridge
+
+namespace fiberbridge::app {
 
 Fingerprint identify_inputs(SceneContext& ctx, const std::vector<analysis::TestRecord>& records) {
   Fingerprint fp = scene_fingerprint(ctx.parameters());

@@ -114,13 +114,8 @@ struct CampaignSection {
                          (have.empty() ? std::string("none") : have) + ")");
       }
     }
-    std::stringstream in(prm.get("Reference materials"));
-    std::string m;
-    while (std::getline(in, m, ',')) {
-      const auto b = m.find_first_not_of(" \t");
-      if (b != std::string::npos)
-        reference_materials.push_back(m.substr(b, m.find_last_not_of(" \t") - b + 1));
-    }
+    for (auto& m : split_list(prm.get("Reference materials"), ','))
+      reference_materials.push_back(std::move(m));
     if (manifest.empty())
       throw InputError("Campaign/Manifest: the scene runs 'campaign' but names no manifest");
   }

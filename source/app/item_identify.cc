@@ -7,7 +7,6 @@
 #include "fiberbridge/app/identify_resume.h"
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/models.h"
-#include "fiberbridge/app/result_codec.h"
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/app/section.h"
 #include "fiberbridge/app/task_distributor.h"
@@ -132,6 +131,9 @@ void parse_identify_section(dealii::ParameterHandler& prm, SceneParameters& out)
 
 namespace {
 
+/// What a fit's bytes hold when it crosses from the rank that ran it (core/binary_archive.h).
+const char* fit_kind = "fiberbridge identify fit";
+
 /// The records of the Test section, read once: `reduce`'s (it ran before, scene order), else
 /// read here, as reduce reads them, and kept in the context (identify's check reads them, its run
 /// fits them).
@@ -222,8 +224,9 @@ run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
   std::vector<std::optional<identify::Identification>> fits(units.size());
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < units.size(); ++i)
-    if (const auto kept = find_finished_unit(ctx.output_dir, ctx.resume, units[i], inputs))
-      fits[i] = identification_from_record(*kept);
+    if (auto kept = find_finished_unit<identify::Identification>(ctx.output_dir, ctx.resume,
+                                                                 units[i], inputs))
+      fits[i] = std::move(*kept);
     else
       todo.push_back(i);
   const MPI_Comm comm = simulation_communicator();
@@ -244,17 +247,15 @@ run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
           const std::size_t i = todo[t];
           const auto id = fit_records(of[i], specimen, quoted, settings, progress,
                                       jobs_across_ranks(nullptr, units[i]), forward);
-          const Json record = identification_to_record(id);
-          keep_finished_unit(ctx.output_dir, units[i], inputs, record); // on rank 0 only
-          return json_to_bytes(record);
+          keep_finished_unit(ctx.output_dir, units[i], inputs, id); // on rank 0 only
+          return to_archive_bytes(id, fit_kind);
         },
         comm, cost);
     for (std::size_t t = 0; t < todo.size(); ++t) {
       const std::size_t i = todo[t];
-      const Json record = json_from_bytes(done.output[t]);
-      fits[i] = identification_from_record(record);
+      fits[i] = from_archive_bytes<identify::Identification>(done.output[t], fit_kind);
       if (done.rank[t] != 0) // rank 0 keeps the fits the other ranks ran
-        keep_finished_unit(ctx.output_dir, units[i], inputs, record);
+        keep_finished_unit(ctx.output_dir, units[i], inputs, *fits[i]);
     }
     log.push_back({{"fit", "all"},
                    {"what", "fits"},
@@ -265,7 +266,7 @@ run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
     for (const auto i : todo) {
       fits[i] = fit_records(of[i], specimen, quoted, settings, progress,
                             jobs_across_ranks(&log, units[i]), forward);
-      keep_finished_unit(ctx.output_dir, units[i], inputs, identification_to_record(*fits[i]));
+      keep_finished_unit(ctx.output_dir, units[i], inputs, *fits[i]);
     }
   }
   std::vector<identify::Identification> out;

@@ -7,14 +7,15 @@
 
 #include "fiberbridge/app/items.h"
 #include "fiberbridge/app/models.h"
-#include "fiberbridge/app/result_codec.h"
 #include "fiberbridge/app/resume_store.h"
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/app/section.h"
 #include "fiberbridge/app/task_distributor.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/json_archive.h"
 #include "fiberbridge/core/plot.h"
+#include "fiberbridge/result/result_archive.h"
 
 #include <deal.II/base/patterns.h>
 
@@ -30,6 +31,11 @@
 namespace fiberbridge::app {
 
 namespace {
+
+// What a study task's bytes hold (core/binary_archive.h): a ladder level's result, or a
+// stability case's row.
+const char* ladder_run_kind = "fiberbridge study ladder level";
+const char* stability_run_kind = "fiberbridge study stability case";
 
 /// The scene's parameters with a run's settings "Section/Key=value" applied to a copy: the
 /// scene's own parameters stay as they are (the later items and the other runs read them).
@@ -168,7 +174,7 @@ LadderOutcome analyse_ladder(const Ladder& ladder, const TaskResults& done, std:
   out.target = target;
   auto& run_levels = out.levels;
   for (std::size_t l = 0, task = first_task; l < ladder.levels; ++l, ++task) {
-    auto r = result_from_json(json_from_bytes(done.output[task]));
+    auto r = from_archive_bytes<result::SimulationResult>(done.output[task], ladder_run_kind);
     double peak = 0;
     for (const auto& p : r.rcurve)
       if (std::isfinite(p.load))
@@ -406,7 +412,7 @@ void run_study_item(SceneContext& ctx) {
         const std::string run = ladder.model + "_level" + std::to_string(l);
         return run_or_restore(
             ctx.output_dir, ctx.resume, "study_" + run, inputs, ctx.out("study/" + run),
-            [&] { return json_to_bytes(result_to_json(run_ladder_level(ctx, ladder, l))); });
+            [&] { return to_archive_bytes(run_ladder_level(ctx, ladder, l), ladder_run_kind); });
       });
       cost.push_back(std::pow(4.0, double(l)));
     }
@@ -421,8 +427,10 @@ void run_study_item(SceneContext& ctx) {
       TaskOwnsItsFiles own;
       const std::string run = "stability_" + c->name + "_" + model;
       return run_or_restore(
-          ctx.output_dir, ctx.resume, "study_" + run, inputs, ctx.out("study/" + run),
-          [&] { return json_to_bytes(run_stability_case(ctx, *c, model, plateau_tol)); });
+          ctx.output_dir, ctx.resume, "study_" + run, inputs, ctx.out("study/" + run), [&] {
+            return to_archive_bytes(run_stability_case(ctx, *c, model, plateau_tol),
+                                    stability_run_kind);
+          });
     });
     cost.push_back(1.0);
   }
@@ -441,7 +449,7 @@ void run_study_item(SceneContext& ctx) {
   }
   std::vector<Json> stability_rows;
   for (std::size_t k = 0; k < case_runs.size(); ++k) {
-    Json row = json_from_bytes(done.output[first_case_task + k]);
+    Json row = from_archive_bytes<Json>(done.output[first_case_task + k], stability_run_kind);
     row["rank"] = done.rank[first_case_task + k];
     row["cpu_s"] = done.cpu_seconds[first_case_task + k];
     stability_rows.push_back(std::move(row));

@@ -1,13 +1,15 @@
 #include "fiberbridge/app/resume_store.h"
 
 #include "fiberbridge/app/models.h"
-#include "fiberbridge/app/result_codec.h"
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/core/binary_archive.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
+#include "fiberbridge/core/json_archive.h"
 #include "fiberbridge/core/output_guard.h"
 #include "fiberbridge/law/law_fingerprint.h"
+#include "fiberbridge/result/result_archive.h"
 
 #include <filesystem>
 #include <fstream>
@@ -22,20 +24,49 @@ namespace fiberbridge::app {
 namespace {
 
 const char* record_format = "fiberbridge finished unit";
-constexpr int record_version = 1;
+// 1: a CBOR document (<unit>.cbor); 2: the archive of core/binary_archive.h (<unit>.rec).
+constexpr std::uint32_t record_version = 2;
 
 /// Entries that steer the run but not its results.
 const std::set<std::string> run_control = {"Output directory", "Run", "MPM/Threads",
                                            "MPM/Checkpoint interval"};
 
-std::string record_path(const std::string& output_dir, std::string unit) {
+/// resume/<unit><extension>, the unit's name made a file name.
+std::string record_path(const std::string& output_dir, std::string unit,
+                        const char* extension = ".rec") {
   for (auto& c : unit)
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.'))
       c = '_';
-  return resume_directory(output_dir) + "/" + unit + ".cbor";
+  return resume_directory(output_dir) + "/" + unit + extension;
 }
 
+/// What a simulation item leaves in the scene: its summary blocks, the plots it added, and its
+/// result.
+struct SimulationItemRecord {
+  Json blocks = Json::object();
+  Json plots = Json::array();
+  result::SimulationResult result;
+};
+
 } // namespace
+} // namespace fiberbridge::app
+
+template <>
+struct fiberbridge::BinaryCodec<fiberbridge::app::SimulationItemRecord> {
+  static void save(BinaryWriter& out, const app::SimulationItemRecord& r) {
+    out.put(r.blocks);
+    out.put(r.plots);
+    out.put(r.result);
+  }
+  static void load(BinaryReader& in, app::SimulationItemRecord& r) {
+    in.get(r.blocks);
+    in.get(r.plots);
+    in.get(r.result);
+  }
+};
+
+namespace fiberbridge::app {
+namespace {} // namespace
 
 Fingerprint scene_fingerprint(const SceneParameters& parameters) {
   Fingerprint fp;
@@ -93,27 +124,33 @@ std::string resume_directory(const std::string& output_dir) {
   return output_dir + "/resume";
 }
 
-std::optional<Json> find_finished_unit(const std::string& output_dir, bool resume,
-                                       const std::string& unit, const Fingerprint& inputs) {
-  const std::string path = record_path(output_dir, unit);
-  if (!resume || !std::filesystem::exists(path))
+std::optional<BinaryReader> open_finished_unit(const std::string& output_dir, bool resume,
+                                               const std::string& unit, const Fingerprint& inputs) {
+  if (!resume)
     return std::nullopt;
-  Json r;
-  try {
-    r = json_from_bytes(read_file_bytes(path));
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(path + ": not a record of finished work (" + e.what() +
-                     "); remove it, or run without --resume");
-  }
-  if (!r.is_object() || r.value("format", "") != record_format || !r.contains("payload") ||
-      !r.contains("inputs"))
-    throw InputError(path + ": not a record of finished work; remove it, or run without --resume");
-  if (r.value("version", 0) != record_version)
-    throw InputError(path + ": written by another version of fiberbridge; run without --resume");
-  std::map<std::string, std::string> saved;
-  for (const auto& kv : r["inputs"])
-    saved[kv.at(0).get<std::string>()] = kv.at(1).get<std::string>();
+  const std::string path = record_path(output_dir, unit);
   const std::string afresh = "; run without --resume to start afresh";
+  if (!std::filesystem::exists(path)) {
+    // The same rule as a record of another format version: the user decides to start afresh.
+    const std::string before = record_path(output_dir, unit, ".cbor");
+    if (std::filesystem::exists(before))
+      throw InputError(before +
+                       ": a record written by an earlier version of fiberbridge (CBOR, before "
+                       "the one archive of issue 30); it cannot be restored" +
+                       afresh);
+    return std::nullopt;
+  }
+  std::optional<BinaryReader> in;
+  try {
+    in.emplace(read_file_bytes(path), record_format, record_version, path);
+  } catch (const InputError& e) {
+    throw InputError(e.what() + afresh);
+  }
+  if (const auto saved_unit = in->get<std::string>(); saved_unit != unit)
+    throw InputError(path + ": a record of '" + saved_unit + "', not of '" + unit + "'" + afresh);
+  std::map<std::string, std::string> saved;
+  for (auto& [key, value] : in->get<Fingerprint>())
+    saved[key] = value;
   for (const auto& [key, value] : inputs) {
     const auto it = saved.find(key);
     if (it == saved.end())
@@ -127,13 +164,23 @@ std::optional<Json> find_finished_unit(const std::string& output_dir, bool resum
   if (!saved.empty())
     throw InputError(path + ": the scene changed since this work was done: " +
                      saved.begin()->first + " is gone" + afresh);
-  if (output_enabled())
-    std::cerr << "fiberbridge: resume: " << unit << " restored from " << path << "\n";
-  return r["payload"];
+  return in;
 }
 
-void keep_finished_unit(const std::string& output_dir, const std::string& unit,
-                        const Fingerprint& inputs, const Json& payload) {
+void report_restored(const std::string& unit, const std::string& path) {
+  if (output_enabled())
+    std::cerr << "fiberbridge: resume: " << unit << " restored from " << path << "\n";
+}
+
+BinaryWriter finished_unit_record(const std::string& unit, const Fingerprint& inputs) {
+  BinaryWriter out(record_format, record_version);
+  out.put(unit);
+  out.put(inputs);
+  return out;
+}
+
+void store_finished_unit(const std::string& output_dir, const std::string& unit,
+                         const BinaryWriter& record) {
   if (!output_enabled())
     return;
   const std::string dir = resume_directory(output_dir);
@@ -141,14 +188,7 @@ void keep_finished_unit(const std::string& output_dir, const std::string& unit,
   std::filesystem::create_directories(dir, ec);
   if (ec)
     throw InputError(dir + ": cannot create (" + ec.message() + ")");
-  Json in = Json::array();
-  for (const auto& [k, v] : inputs)
-    in.push_back({k, v});
-  write_file_atomically(record_path(output_dir, unit), json_to_bytes({{"format", record_format},
-                                                                      {"version", record_version},
-                                                                      {"unit", unit},
-                                                                      {"inputs", std::move(in)},
-                                                                      {"payload", payload}}));
+  write_file_atomically(record_path(output_dir, unit), record.finish());
 }
 
 void clear_resume_state(const std::string& output_dir) {
@@ -161,13 +201,10 @@ void clear_resume_state(const std::string& output_dir) {
 std::string run_or_restore(const std::string& output_dir, bool resume, const std::string& unit,
                            const Fingerprint& inputs, const std::string& unit_dir,
                            const std::function<std::string()>& run) {
-  if (const auto kept = find_finished_unit(output_dir, resume, unit, inputs)) {
-    const auto& b = kept->get_binary();
-    return std::string(b.begin(), b.end());
-  }
+  if (auto kept = find_finished_unit<std::string>(output_dir, resume, unit, inputs))
+    return std::move(*kept);
   const std::string bytes = run();
-  keep_finished_unit(output_dir, unit, inputs,
-                     Json::binary(std::vector<std::uint8_t>(bytes.begin(), bytes.end())));
+  keep_finished_unit(output_dir, unit, inputs, bytes);
   clear_resume_state(unit_dir);
   return bytes;
 }
@@ -179,29 +216,27 @@ bool is_simulation_item(const std::string& item) {
 void run_or_restore_simulation_item(SceneContext& ctx, const SceneItem& item) {
   const std::string unit = "item_" + item.name;
   const Fingerprint inputs = simulation_fingerprint(ctx);
-  if (auto kept = find_finished_unit(ctx.output_dir, ctx.resume, unit, inputs)) {
-    for (const auto& [key, block] : (*kept)["summary"].items())
+  if (auto kept =
+          find_finished_unit<SimulationItemRecord>(ctx.output_dir, ctx.resume, unit, inputs)) {
+    for (const auto& [key, block] : kept->blocks.items())
       ctx.summary[key] = block;
-    for (const auto& p : (*kept)["plots"])
+    for (const auto& p : kept->plots)
       ctx.summary["plots"].push_back(p);
-    ctx.results[item.name] = result_from_json((*kept)["result"]);
+    ctx.results[item.name] = std::move(kept->result);
     return;
   }
   const Json before = ctx.summary;
   item.run(ctx);
   // What the item left in the summary: its blocks, and the plots it added.
-  Json blocks = Json::object();
+  SimulationItemRecord record;
   for (const auto& [key, block] : ctx.summary.items())
     if (key != "plots" && (!before.contains(key) || before[key] != block))
-      blocks[key] = block;
-  Json plots = Json::array();
+      record.blocks[key] = block;
   const std::size_t n_before = before.contains("plots") ? before["plots"].size() : 0;
   for (std::size_t i = n_before; i < ctx.summary["plots"].size(); ++i)
-    plots.push_back(ctx.summary["plots"][i]);
-  keep_finished_unit(ctx.output_dir, unit, inputs,
-                     {{"summary", std::move(blocks)},
-                      {"plots", std::move(plots)},
-                      {"result", result_to_json(ctx.results.at(item.name))}});
+    record.plots.push_back(ctx.summary["plots"][i]);
+  record.result = ctx.results.at(item.name);
+  keep_finished_unit(ctx.output_dir, unit, inputs, record);
   if (output_enabled()) {
     std::error_code ec;
     std::filesystem::remove(resume_directory(ctx.output_dir) + "/" + item.name + "_state.bin", ec);

@@ -79,19 +79,6 @@ void declare_everything(dealii::ParameterHandler& prm) {
 
 } // namespace
 
-std::vector<std::string> split_list(const std::string& s, char separator) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  std::string item;
-  while (std::getline(in, item, separator)) {
-    const auto b = item.find_first_not_of(" \t");
-    if (b == std::string::npos)
-      continue;
-    out.push_back(item.substr(b, item.find_last_not_of(" \t") - b + 1));
-  }
-  return out;
-}
-
 void apply_setting(dealii::ParameterHandler& prm, const std::string& setting,
                    const std::string& where) {
   const auto eq = setting.find('=');

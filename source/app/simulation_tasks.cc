@@ -1,10 +1,11 @@
 #include "fiberbridge/app/simulation_tasks.h"
 
 #include "fiberbridge/app/models.h"
-#include "fiberbridge/app/result_codec.h"
 #include "fiberbridge/app/resume_store.h"
 #include "fiberbridge/app/task_distributor.h"
+#include "fiberbridge/core/json_archive.h"
 #include "fiberbridge/core/output_guard.h"
+#include "fiberbridge/result/result_archive.h"
 
 #include <chrono>
 #include <functional>
@@ -14,6 +15,39 @@
 namespace fiberbridge::app {
 
 namespace {
+
+/// What a simulation task hands back to rank 0: the item's summary block, the plots it made, its
+/// result and how long it took.
+struct SimulationTaskOutput {
+  Json block;
+  Json plots = Json::array();
+  result::SimulationResult result;
+  double wall_time_s = 0;
+};
+
+} // namespace
+} // namespace fiberbridge::app
+
+template <>
+struct fiberbridge::BinaryCodec<fiberbridge::app::SimulationTaskOutput> {
+  static void save(BinaryWriter& out, const app::SimulationTaskOutput& t) {
+    out.put(t.block);
+    out.put(t.plots);
+    out.put(t.result);
+    out.put(t.wall_time_s);
+  }
+  static void load(BinaryReader& in, app::SimulationTaskOutput& t) {
+    in.get(t.block);
+    in.get(t.plots);
+    in.get(t.result);
+    in.get(t.wall_time_s);
+  }
+};
+
+namespace fiberbridge::app {
+namespace {
+
+const char* task_output_kind = "fiberbridge simulation task";
 
 /// Relative cost, only to order the hand-out (the slowest model starts first); 0 for the items
 /// that are not simulations.
@@ -56,21 +90,20 @@ Json run_simulations(SceneContext& ctx, const std::set<std::string>& wanted, MPI
         run_or_restore_simulation_item(sub, item);
         const double t =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        return json_to_bytes({{"block", sub.summary[item.name]},
-                              {"plots", sub.summary["plots"]},
-                              {"result", result_to_json(sub.results.at(item.name))},
-                              {"wall_time_s", t}});
+        return to_archive_bytes(SimulationTaskOutput{sub.summary[item.name], sub.summary["plots"],
+                                                     sub.results.at(item.name), t},
+                                task_output_kind);
       },
       comm, cost);
   // Back into the scene in item order, as a serial run would have left them.
   for (std::size_t i = 0; i < sims.size(); ++i) {
     const std::string& name = sims[i]->name;
-    const Json r = json_from_bytes(done.output[i]);
-    ctx.summary[name] = r["block"];
-    for (const auto& p : r["plots"])
+    auto r = from_archive_bytes<SimulationTaskOutput>(done.output[i], task_output_kind);
+    ctx.summary[name] = std::move(r.block);
+    for (const auto& p : r.plots)
       ctx.summary["plots"].push_back(p);
-    ctx.results[name] = result_from_json(r["result"]);
-    ctx.summary["item_wall_time_s"][name] = r["wall_time_s"];
+    ctx.results[name] = std::move(r.result);
+    ctx.summary["item_wall_time_s"][name] = r.wall_time_s;
     block["items"].push_back({{"item", name}, {"rank", done.rank[i]}});
   }
   return block;

@@ -3,6 +3,7 @@
 
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 
 #include <filesystem>
@@ -45,13 +46,7 @@ void TestSection::declare_parameters(dealii::ParameterHandler& prm) {
 }
 
 void TestSection::parse_parameters(dealii::ParameterHandler& prm) {
-  files.clear();
-  std::istringstream list(prm.get("Files"));
-  for (std::string f; std::getline(list, f, ',');) {
-    const auto b = f.find_first_not_of(" \t");
-    if (b != std::string::npos)
-      files.push_back(f.substr(b, f.find_last_not_of(" \t") - b + 1));
-  }
+  files = split_list(prm.get("Files"), ',');
   columns = prm.get("Columns");
   crack_length = prm.get("Crack length");
   crack_back_tolerance = prm.get_double("Crack back tolerance") * mm;

@@ -718,16 +718,12 @@ void DcbBeamSolver::finish(SimulationResult& result) {
   result::fill_r_energy(rc, arm_.width); // d(W - U_rec)/(B da), the shared stencil
   // Unstable growth under displacement control: the states where the load-point opening is
   // below an earlier one would be passed in one jump of a displacement-controlled test.
+  const auto snap_backs = result::find_snap_backs(rc);
   std::size_t unstable = 0;
-  double max_opening = 0, first_a = result::not_available, last_a = result::not_available;
-  for (const auto& p : rc) {
-    if (p.load_point_opening < max_opening) {
-      if (unstable++ == 0)
-        first_a = p.a;
-      last_a = p.a;
-    }
-    max_opening = std::max(max_opening, p.load_point_opening);
-  }
+  for (const auto& s : snap_backs)
+    unstable += s.to - s.from - 1;
+  const double first_a = unstable > 0 ? rc[snap_backs.front().from + 1].a : result::not_available;
+  const double last_a = unstable > 0 ? rc[snap_backs.back().to - 1].a : result::not_available;
   if (unstable > 0)
     note(result, "snap-back: " + std::to_string(unstable) + " recorded advances between a = " +
                      fmt(first_a / mm) + " and " + fmt(last_a / mm) +

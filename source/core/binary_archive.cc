@@ -60,7 +60,7 @@ BinaryReader::BinaryReader(std::string bytes, const std::string& magic, std::uin
   if (n != magic.size() || end_ < sizeof n + n || bytes_.compare(sizeof n, n, magic) != 0)
     throw InputError(source_ + ": not a checkpoint of this kind" + what);
   if (checksum64(bytes_.data(), end_) != h)
-    throw InputError(source_ + ": damaged (checksum mismatch)" + what);
+    throw InputError(source_ + ": damaged or cut short (checksum mismatch)" + what);
   pos_ = sizeof n + n;
   const auto v = get<std::uint32_t>();
   if (v != version)
@@ -83,6 +83,16 @@ std::size_t BinaryReader::count(std::size_t min_size) {
     throw InputError(source_ + ": a list of " + std::to_string(n) +
                      " entries is longer than the rest of the file");
   return static_cast<std::size_t>(n);
+}
+
+void BinaryReader::get(bool& b) {
+  const auto byte = get<std::uint8_t>();
+  if (byte > 1)
+    throw InputError(source_ + ": byte " + std::to_string(pos_ - 1) + " holds " +
+                     std::to_string(byte) +
+                     " where a true/false flag was expected: the file does not match this "
+                     "version's layout");
+  b = byte == 1;
 }
 
 void BinaryReader::get(std::string& s) {

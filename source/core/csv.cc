@@ -1,6 +1,9 @@
 #include "fiberbridge/core/csv.h"
 
+#include "cells.h"
+
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/output_guard.h"
 
 #include <cerrno>
@@ -15,57 +18,17 @@ namespace fiberbridge {
 
 namespace {
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos)
-    return "";
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
-
-/// The cells of one line: commas separate them and spaces around a cell are dropped. A cell in
-/// double quotes may hold commas and doubled quotes ("" for "), as spreadsheet programs write
-/// them (RFC 4180), but must end on the same line. `where` is "file:line" for messages.
+/// The cells of one line of our own CSV: commas separate them (cells::split). `where` is
+/// "file:line" for messages.
 std::vector<std::string> split_cells(const std::string& line, const std::string& where) {
   std::vector<std::string> cells;
-  std::size_t i = 0;
-  const auto skip_blanks = [&] {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r'))
-      ++i;
-  };
-  while (true) {
-    skip_blanks();
-    std::string cell;
-    if (i < line.size() && line[i] == '"') {
-      bool closed = false;
-      for (++i; i < line.size(); ++i) {
-        if (line[i] != '"') {
-          cell += line[i];
-        } else if (i + 1 < line.size() && line[i + 1] == '"') {
-          cell += '"';
-          ++i;
-        } else {
-          closed = true;
-          ++i;
-          break;
-        }
-      }
-      if (!closed)
-        throw InputError(where + ": a quoted cell has no closing quote (quoted cells must end "
-                                 "on their line)");
-      skip_blanks();
-      if (i < line.size() && line[i] != ',')
-        throw InputError(where + ": text after the closing quote of a quoted cell");
-    } else {
-      const auto end = line.find(',', i);
-      cell = trim(line.substr(i, end == std::string::npos ? std::string::npos : end - i));
-      i = end == std::string::npos ? line.size() : end;
-    }
-    cells.push_back(cell);
-    if (i >= line.size())
-      return cells;
-    ++i; // the comma; a line ending in one has an empty last cell
-  }
+  cells::Fault fault{};
+  if (!cells::split(line, ',', cells, &fault))
+    throw InputError(where + (fault == cells::Fault::unclosed_quote
+                                  ? ": a quoted cell has no closing quote (quoted cells must end "
+                                    "on their line)"
+                                  : ": text after the closing quote of a quoted cell"));
+  return cells;
 }
 
 } // namespace
@@ -89,7 +52,7 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& source_name
   std::size_t line_no = 0;
   while (std::getline(in, line)) {
     ++line_no;
-    const std::string content = trim(line);
+    const std::string content = trim_blanks(line, cell_blanks);
     if (content.empty() || content[0] == '#')
       continue;
     auto cells = split_cells(content, source_name + ":" + std::to_string(line_no));

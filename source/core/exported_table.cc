@@ -1,7 +1,10 @@
 // Machine-export tables: layout detection and parsing (exported_table.h).
 #include "fiberbridge/core/exported_table.h"
 
+#include "cells.h"
+
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/unit_parse.h"
 
 #include <algorithm>
@@ -25,13 +28,6 @@ struct Line {
   std::size_t number; ///< 1-based
   std::string text;   ///< without the line end, trimmed of trailing blanks
 };
-
-std::string trim(const std::string& s, const char* blanks = " \t\r") {
-  const auto b = s.find_first_not_of(blanks);
-  if (b == std::string::npos)
-    return "";
-  return s.substr(b, s.find_last_not_of(blanks) - b + 1);
-}
 
 bool valid_utf8(const std::string& s) {
   for (std::size_t i = 0; i < s.size();) {
@@ -127,7 +123,7 @@ std::vector<Line> content_lines(const std::string& raw, bool& latin1,
     if (j == std::string::npos)
       j = raw.size();
     ++number;
-    std::string t = trim(raw.substr(i, j - i));
+    std::string t = trim_blanks(raw.substr(i, j - i), cell_blanks);
     if (std::any_of(t.begin(), t.end(), [](char c) { return c & 0x80; }) && !valid_utf8(t)) {
       t = latin1_to_utf8(t);
       latin1 = true;
@@ -137,59 +133,6 @@ std::vector<Line> content_lines(const std::string& raw, bool& latin1,
     i = j + 1;
   }
   return lines;
-}
-
-/// Splits a line at `delim` (' ' = runs of blanks), honouring double quotes. Returns false when a
-/// quote is not closed on its line or text follows a closing quote.
-bool split_cells(const std::string& line, char delim, std::vector<std::string>& cells) {
-  cells.clear();
-  const bool blanks = delim == ' ';
-  const auto is_sep = [&](char c) { return blanks ? (c == ' ' || c == '\t') : c == delim; };
-  const auto is_pad = [&](char c) { return c == ' ' || (c == '\t' && delim != '\t') || c == '\r'; };
-  std::size_t i = 0;
-  const std::size_t n = line.size();
-  while (true) {
-    while (i < n && (is_pad(line[i]) || (blanks && is_sep(line[i]))))
-      ++i;
-    std::string cell;
-    if (i < n && line[i] == '"') {
-      bool closed = false;
-      for (++i; i < n; ++i) {
-        if (line[i] != '"') {
-          cell += line[i];
-        } else if (i + 1 < n && line[i + 1] == '"') {
-          cell += '"';
-          ++i;
-        } else {
-          closed = true;
-          ++i;
-          break;
-        }
-      }
-      if (!closed)
-        return false;
-      while (i < n && is_pad(line[i]) && !is_sep(line[i]))
-        ++i;
-      if (i < n && !is_sep(line[i]))
-        return false;
-    } else {
-      std::size_t e = i;
-      while (e < n && !is_sep(line[e]))
-        ++e;
-      cell = trim(line.substr(i, e - i), delim == '\t' ? " \r" : " \t\r");
-      i = e;
-    }
-    cells.push_back(std::move(cell));
-    if (i >= n)
-      return true;
-    ++i; // the delimiter
-    if (blanks) {
-      while (i < n && is_sep(line[i]))
-        ++i;
-      if (i >= n)
-        return true;
-    }
-  }
 }
 
 enum class CellKind { number, missing, text };
@@ -293,7 +236,7 @@ bool try_delimiter(const std::vector<Line>& lines, char delim, char decimal, Det
   const auto classify = [&](std::size_t i) {
     while (widths.size() <= i) {
       const std::size_t k = widths.size();
-      const bool ok = split_cells(lines[k].text, delim, cells);
+      const bool ok = cells::split(lines[k].text, delim, cells);
       widths.push_back(ok ? cells.size() : 0);
       data.push_back(ok && cells.size() >= 2 && is_data(cells, decimal));
     }
@@ -319,13 +262,13 @@ bool try_delimiter(const std::vector<Line>& lines, char delim, char decimal, Det
   d.first_data = f;
   d.n_columns = widths[f];
   std::size_t h = f - 1;
-  split_cells(lines[h].text, delim, cells);
+  cells::split(lines[h].text, delim, cells);
   if (is_units_row(cells) && h > 0) {
     d.units = cells;
     d.layout.units_line = lines[h].number;
     --h;
   }
-  if (!split_cells(lines[h].text, delim, cells))
+  if (!cells::split(lines[h].text, delim, cells))
     return false;
   d.header = delim == ' ' ? join_bracketed_units(cells) : cells;
   d.layout.delimiter = delim;
@@ -363,7 +306,7 @@ std::string lower(std::string s) {
 bool is_missing_value(const std::string& cell) {
   static const char* const tokens[] = {"",  "nan", "-nan", "+nan", "n/a",  "#n/a", "na",
                                        "-", "--",  "---",  "null", "none", "#nv",  "nv"};
-  const std::string c = lower(trim(cell));
+  const std::string c = lower(trim_blanks(cell, cell_blanks));
   return std::find(std::begin(tokens), std::end(tokens), c) != std::end(tokens);
 }
 
@@ -503,7 +446,7 @@ ExportedTable ExportedTable::parse(const std::string& raw, const std::string& so
   const std::vector<std::string> raw_header = d.header, raw_units = d.units;
   d.header.resize(n);
   for (std::size_t i = 0; i < n; ++i)
-    d.header[i] = trim(d.header[i]);
+    d.header[i] = trim_blanks(d.header[i], cell_blanks);
   t.header_ = d.header;
   t.units_.assign(n, "");
   for (std::size_t i = 0; i < n && i < d.units.size(); ++i)
@@ -517,7 +460,7 @@ ExportedTable ExportedTable::parse(const std::string& raw, const std::string& so
   // is not data: the lines after the last data-like one are set aside and counted.
   std::size_t end = lines.size();
   while (end > d.first_data + 1) {
-    const bool ok = split_cells(lines[end - 1].text, d.layout.delimiter, cells);
+    const bool ok = cells::split(lines[end - 1].text, d.layout.delimiter, cells);
     if (ok && cells.size() >= 2 && is_data(cells, d.layout.decimal))
       break;
     --end;
@@ -528,7 +471,7 @@ ExportedTable ExportedTable::parse(const std::string& raw, const std::string& so
   }
   for (std::size_t i = d.first_data; i < end; ++i) {
     const std::string at = source_name + ":" + std::to_string(lines[i].number);
-    if (!split_cells(lines[i].text, d.layout.delimiter, cells))
+    if (!cells::split(lines[i].text, d.layout.delimiter, cells))
       throw InputError(at + ": a quoted cell has no closing quote or text follows it (quoted "
                             "cells must end on their line)");
     if (cells == raw_header || (!raw_units.empty() && cells == raw_units) ||

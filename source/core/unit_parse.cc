@@ -2,6 +2,7 @@
 #include "fiberbridge/core/unit_parse.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 
 #include <iterator>
@@ -38,13 +39,6 @@ constexpr KnownUnit known[] = {{"N", Dimension::force, 1.0},
                                {"min", Dimension::time, 60.0},
                                {"h", Dimension::time, 3600.0}};
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos)
-    return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
 const KnownUnit* find(const std::string& unit) {
   for (const auto& k : known)
     if (unit == k.symbol)
@@ -67,21 +61,22 @@ const char* dimension_name(Dimension d) {
 }
 
 NamedUnit split_header_unit(const std::string& header) {
-  const std::string h = trim(header);
+  const std::string h = trim_blanks(header, cell_blanks);
   if (h.size() >= 2 && (h.back() == ')' || h.back() == ']')) {
     const char open = h.back() == ')' ? '(' : '[';
     const auto b = h.find_last_of(open);
     if (b != std::string::npos && b > 0)
-      return {trim(h.substr(0, b)), trim(h.substr(b + 1, h.size() - b - 2))};
+      return {trim_blanks(h.substr(0, b), cell_blanks),
+              trim_blanks(h.substr(b + 1, h.size() - b - 2), cell_blanks)};
   }
   return {h, ""};
 }
 
 std::string strip_unit_brackets(const std::string& cell) {
-  std::string c = trim(cell);
+  std::string c = trim_blanks(cell, cell_blanks);
   if (c.size() >= 2 &&
       ((c.front() == '(' && c.back() == ')') || (c.front() == '[' && c.back() == ']')))
-    c = trim(c.substr(1, c.size() - 2));
+    c = trim_blanks(c.substr(1, c.size() - 2), cell_blanks);
   return c;
 }
 

@@ -22,15 +22,7 @@ std::string trim(const std::string& s) {
 std::map<std::string, std::string> parse_columns(const std::string& text,
                                                  const std::string& where) {
   std::map<std::string, std::string> map;
-  std::size_t b = 0;
-  while (b <= text.size()) {
-    auto e = text.find(',', b);
-    if (e == std::string::npos)
-      e = text.size();
-    const std::string entry = trim(text.substr(b, e - b));
-    b = e + 1;
-    if (entry.empty())
-      continue;
+  for (const auto& entry : split_list(text, ',')) {
     const auto colon = entry.find(':');
     if (colon == std::string::npos)
       throw InputError(where + ": entry '" + entry + "' has no ':' (expected 'our_name: header')");

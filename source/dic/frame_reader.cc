@@ -4,6 +4,7 @@
 #include "fiberbridge/dic/frame.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 
 #include <algorithm>
 #include <cctype>
@@ -216,15 +217,9 @@ const char* layout_name(Layout layout) {
 
 FrameColumnMap FrameColumnMap::parse(const std::string& text, const std::string& where) {
   FrameColumnMap map;
-  std::size_t b = 0;
-  while (b <= text.size()) {
-    auto e = text.find(',', b);
-    if (e == std::string::npos)
-      e = text.size();
-    const std::string_view entry = trim(std::string_view(text).substr(b, e - b));
-    b = e + 1;
-    if (entry.empty())
-      continue;
+  // Blanks as this file's trim: line ends too.
+  for (const auto& item : split_list(text, ',', " \t\r\n")) {
+    const std::string_view entry = item;
     const auto colon = entry.find(':');
     if (colon == std::string_view::npos)
       throw InputError(where + ": entry '" + std::string(entry) +

@@ -50,15 +50,7 @@ std::vector<long> digit_runs(const std::string& path) {
 std::vector<std::string> expand_frame_list(const std::string& list, const std::string& base_dir,
                                            const std::string& where) {
   std::vector<std::string> out;
-  std::size_t b = 0;
-  while (b <= list.size()) {
-    auto e = list.find(',', b);
-    if (e == std::string::npos)
-      e = list.size();
-    const std::string entry = trim(list.substr(b, e - b));
-    b = e + 1;
-    if (entry.empty())
-      continue;
+  for (const auto& entry : split_list(list, ',')) {
     const bool pattern = entry.find_first_of("*?[") != std::string::npos;
     std::vector<std::string> found;
     if (pattern) {

@@ -738,15 +738,7 @@ void DcbModel<dim>::note_snap_back() {
   // opening control cannot follow: it jumps at the earlier maximum to the first later state with
   // that opening (or runs out of the traced curve).
   const auto& rc = result_.rcurve;
-  for (std::size_t i = 0; i + 1 < rc.size(); ++i) {
-    if (!(rc[i + 1].load_point_opening < rc[i].load_point_opening))
-      continue;
-    std::size_t j = i + 1, low = i + 1;
-    while (j < rc.size() && rc[j].load_point_opening < rc[i].load_point_opening) {
-      if (rc[j].load_point_opening < rc[low].load_point_opening)
-        low = j;
-      ++j;
-    }
+  for (const auto& [i, low, j] : result::find_snap_backs(rc)) {
     std::ostringstream m;
     m << "snap-back: the load-point opening falls from " << rc[i].load_point_opening / units::mm
       << " mm (a = " << rc[i].a / units::mm << " mm, load " << rc[i].load << " N) to "
@@ -760,7 +752,6 @@ void DcbModel<dim>::note_snap_back() {
     else
       m << " past the end of the traced curve";
     result_.notes.push_back(m.str());
-    i = j - 1;
   }
   if (n_turned_back_ > 0)
     result_.notes.push_back(

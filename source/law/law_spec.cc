@@ -1,6 +1,7 @@
 #include "fiberbridge/law/law_spec.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/exponential_law.h"
 
@@ -12,13 +13,7 @@ namespace fiberbridge::law {
 
 std::vector<LawPoint> parse_points_mm_kPa(const std::string& text, const std::string& context) {
   std::vector<LawPoint> points;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    const auto b = item.find_first_not_of(" \t");
-    if (b == std::string::npos)
-      continue;
-    item = item.substr(b, item.find_last_not_of(" \t") - b + 1);
+  for (const auto& item : split_list(text, ',')) {
     const auto colon = item.find(':');
     char* e1 = nullptr;
     char* e2 = nullptr;

@@ -29,7 +29,7 @@ def table(d, f):
 for f in ["study_error_vs_time.csv", "stability.csv", "study_beam.csv", "study_fem.csv"]:
     ta, tb = table(a, f), table(b, f)
     # Exact text equality: the same serial code on the same input on either rank, and the
-    # result crosses ranks bit for bit (result_codec.h), so no tolerance is needed.
+    # result crosses ranks bit for bit (result/result_archive.h), so no tolerance is needed.
     assert ta == tb, (f, [(x, y) for x, y in zip(ta, tb) if x != y][:3])
     assert len(ta) > 3, (f, len(ta))
 s = json.load(open(os.path.join(b, "summary.json")))["study"]

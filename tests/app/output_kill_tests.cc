@@ -196,7 +196,7 @@ TEST(OutputOnKill, MpmSceneKilledAndResumedGivesTheUninterruptedTables) {
     wait_for(pid);
     // The fresh run removed the record of the earlier trial's finished run (a later --resume
     // must not restore another run's result), and was killed before keeping its own.
-    EXPECT_FALSE(fs::exists(dir / "resume" / "item_mpm.cbor")) << what;
+    EXPECT_FALSE(fs::exists(dir / "resume" / "item_mpm.rec")) << what;
     if (sig == SIGKILL) {
       pid = start_scene(dir, resume);
       std::this_thread::sleep_for(std::chrono::duration<double>(second(rng)));
@@ -206,7 +206,7 @@ TEST(OutputOnKill, MpmSceneKilledAndResumedGivesTheUninterruptedTables) {
     // (A kill between keeping the finished item's record and removing its checkpoint leaves
     // both: the record is restored then.)
     const bool had_checkpoint = fs::exists(dir / "resume" / "mpm_state.bin") &&
-                                !fs::exists(dir / "resume" / "item_mpm.cbor");
+                                !fs::exists(dir / "resume" / "item_mpm.rec");
     ASSERT_EQ(wait_for(start_scene(dir, resume, err.string())), 0) << what << ": " << slurp(err);
     EXPECT_TRUE(fs::exists(dir / "summary.json")) << what;
     EXPECT_FALSE(fs::exists(dir / marker)) << what;

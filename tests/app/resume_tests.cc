@@ -57,7 +57,7 @@ std::size_t records_in(const fs::path& dir) {
   std::size_t n = 0;
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(dir / "resume", ec))
-    n += e.path().extension() == ".cbor";
+    n += e.path().extension() == ".rec";
   return n;
 }
 
@@ -95,6 +95,66 @@ void expect_same_table(const fs::path& a, const fs::path& b, const std::string& 
 } // namespace
 
 #ifdef FIBERBRIDGE_HAVE_BEAM
+TEST(Resume, ADamagedForeignOrOlderRecordIsAClearError) {
+  // A record is one archive (core/binary_archive.h; docs/design.md section 4, "One archive"):
+  // restored exactly when intact; cut short, replaced by another file, or left by a version of
+  // before issue 30 (a CBOR <unit>.cbor), it stops --resume with one line naming it, never a
+  // crash and never a silently re-run or half-read unit.
+  const fs::path base = fs::path(FIBERBRIDGE_WORK_DIR) / "resume_records";
+  fs::remove_all(base);
+  fs::create_directories(base);
+  const fs::path dir = base / "out";
+  const std::vector<std::string> args = {
+      "run",   std::string(FIBERBRIDGE_SOURCE_DIR) + "/prm/default.prm",
+      "--set", "Run=beam",
+      "--set", "Output directory=" + dir.string()};
+  auto resume = args;
+  resume.push_back("--resume");
+  ASSERT_EQ(exit_code(start(args, base / "first.txt")), 0) << slurp(base / "first.txt");
+  const fs::path record = dir / "resume" / "item_beam.rec";
+  ASSERT_TRUE(fs::exists(record));
+  const std::string intact = slurp(record);
+  auto beam_block = [&] {
+    std::ifstream in(dir / "summary.json");
+    return fiberbridge::Json::parse(in).at("beam");
+  };
+  const auto reference = beam_block();
+
+  ASSERT_EQ(exit_code(start(resume, base / "restored.txt")), 0) << slurp(base / "restored.txt");
+  EXPECT_EQ(count(slurp(base / "restored.txt"), "item_beam restored from"), 1u)
+      << slurp(base / "restored.txt");
+  EXPECT_EQ(beam_block(), reference) << "the restored summary block differs from the run's";
+
+  auto refused = [&](const std::string& what, const std::string& expect) {
+    const fs::path err = base / (what + ".txt");
+    const int code = exit_code(start(resume, err));
+    EXPECT_TRUE(code > 0 && code < 128) << what << ": exit " << code << "\n" << slurp(err);
+    const std::string text = slurp(err);
+    EXPECT_NE(text.find(expect), std::string::npos) << what << ":\n" << text;
+    EXPECT_NE(text.find("run without --resume to start afresh"), std::string::npos) << what << ":\n"
+                                                                                    << text;
+    EXPECT_EQ(text.find("restored from"), std::string::npos) << what << ":\n" << text;
+  };
+  for (const std::size_t cut :
+       {std::size_t(0), std::size_t(7), intact.size() / 2, intact.size() - 1}) {
+    std::ofstream(record, std::ios::binary | std::ios::trunc) << intact.substr(0, cut);
+    refused("cut_at_" + std::to_string(cut), record.string() + ": ");
+  }
+  std::ofstream(record, std::ios::binary | std::ios::trunc) << "time_s,load_N\n0,1\n";
+  refused("foreign", record.string() + ": not a checkpoint of this kind");
+  fs::remove(record);
+  const auto cbor = fiberbridge::Json::to_cbor(
+      {{"format", "fiberbridge finished unit"}, {"version", 1}, {"unit", "item_beam"}});
+  std::ofstream(dir / "resume" / "item_beam.cbor", std::ios::binary)
+      .write(reinterpret_cast<const char*>(cbor.data()), std::streamsize(cbor.size()));
+  refused("before_issue_30", "item_beam.cbor: a record written by an earlier version");
+
+  // Without --resume the run starts afresh and keeps a new record.
+  ASSERT_EQ(exit_code(start(args, base / "afresh.txt")), 0) << slurp(base / "afresh.txt");
+  EXPECT_TRUE(fs::exists(record));
+  EXPECT_FALSE(fs::exists(dir / "resume" / "item_beam.cbor"));
+}
+
 TEST(Resume, StudyKilledAfterSomeRunsRestoresThemAndRunsTheRest) {
   const fs::path base = fs::path(FIBERBRIDGE_WORK_DIR) / "resume_study";
   fs::remove_all(base);

@@ -2,10 +2,12 @@
 // Finished units of work of a run (a simulation item, a run of a study, an identify fit), kept in
 // the output directory's resume/ folder as they finish, so that `fiberbridge run SCENE --resume`
 // restores them instead of running them again (docs/design.md section 5, "Checkpoints and
-// --resume"). A record holds the unit's result bit for bit (CBOR, as result_codec.h) and the
-// inputs it was made with; a record made with other inputs is refused, naming the first input
-// that differs. A run without --resume starts by removing the folder.
+// --resume"). A record (resume/<unit>.rec) is one archive (core/binary_archive.h): the unit's
+// name, the inputs it was made with, then its result bit for bit; a record made with other
+// inputs is refused, naming the first input that differs. A run without --resume starts by
+// removing the folder.
 #include "fiberbridge/app/scene_context.h"
+#include "fiberbridge/core/binary_archive.h"
 #include "fiberbridge/core/summary.h"
 
 #include <functional>
@@ -31,16 +33,47 @@ Fingerprint simulation_fingerprint(SceneContext& ctx);
 /// <output_dir>/resume
 std::string resume_directory(const std::string& output_dir);
 
-/// With `resume`, the payload of unit `unit` kept by an earlier run into `output_dir`, if any.
-/// Throws InputError naming the record and the first input that differs from `inputs`, or the
-/// record when it cannot be read.
-std::optional<Json> find_finished_unit(const std::string& output_dir, bool resume,
-                                       const std::string& unit, const Fingerprint& inputs);
+/// With `resume`, the record of unit `unit` kept by an earlier run into `output_dir`, if any,
+/// read up to its payload. Throws InputError naming the record and the first input that differs
+/// from `inputs`, or the record when it cannot be read (damaged, of another kind, or written by
+/// another version of fiberbridge: a record of before issue 30 is a CBOR file <unit>.cbor).
+std::optional<BinaryReader> open_finished_unit(const std::string& output_dir, bool resume,
+                                               const std::string& unit, const Fingerprint& inputs);
 
-/// Keeps the payload of a finished unit (atomically; nothing on an MPI rank that does not write,
-/// core/output_guard.h).
+/// The unit's record with its name and inputs, ready for its payload.
+BinaryWriter finished_unit_record(const std::string& unit, const Fingerprint& inputs);
+
+/// Writes a record made by finished_unit_record (atomically; nothing on an MPI rank that does not
+/// write, core/output_guard.h).
+void store_finished_unit(const std::string& output_dir, const std::string& unit,
+                         const BinaryWriter& record);
+
+/// "fiberbridge: resume: <unit> restored from <path>" on stderr (on the rank that writes).
+void report_restored(const std::string& unit, const std::string& path);
+
+/// With `resume`, the payload (a T, read by its BinaryCodec) of unit `unit` kept by an earlier
+/// run, if any; prints a line to stderr when it restores. Errors as open_finished_unit.
+template <class T>
+std::optional<T> find_finished_unit(const std::string& output_dir, bool resume,
+                                    const std::string& unit, const Fingerprint& inputs) {
+  auto in = open_finished_unit(output_dir, resume, unit, inputs);
+  if (!in)
+    return std::nullopt;
+  T payload{};
+  in->get(payload);
+  in->expect_end();
+  report_restored(unit, in->source());
+  return payload;
+}
+
+/// Keeps the payload of a finished unit.
+template <class T>
 void keep_finished_unit(const std::string& output_dir, const std::string& unit,
-                        const Fingerprint& inputs, const Json& payload);
+                        const Fingerprint& inputs, const T& payload) {
+  BinaryWriter record = finished_unit_record(unit, inputs);
+  record.put(payload);
+  store_finished_unit(output_dir, unit, record);
+}
 
 /// At the start of a run without --resume: removes <output_dir>/resume (the records and
 /// checkpoints of an earlier run must not be restored into this one).

@@ -1,6 +1,8 @@
 #pragma once
 // Running a .prm scene (docs/design.md section 5): declare every section, parse the file (unknown
 // entries are errors), apply --set overrides, then run only the items listed in `Run`.
+#include "fiberbridge/core/format.h" // split_list, the lists of a scene
+
 #include <nlohmann/json.hpp>
 
 #include <memory>
@@ -45,10 +47,6 @@ void apply_setting(dealii::ParameterHandler& prm, const std::string& setting,
 std::shared_ptr<const SceneParameters>
 scene_parameters_with(const SceneParameters& scene, const std::vector<std::string>& settings,
                       const std::string& where);
-
-/// The items of a list as a scene writes them ("beam, fem"; "Key = 1, 2"), blanks around each
-/// item removed, empty items dropped.
-std::vector<std::string> split_list(const std::string& s, char separator);
 
 /// Writes the full documented parameter set (every section, defaults) to `out`.
 void print_scene_parameters(std::ostream& out);

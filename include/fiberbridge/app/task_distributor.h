@@ -4,7 +4,7 @@
 // identification) is spread over the ranks of a communicator, each task runs on one rank with
 // the simulations on MPI_COMM_SELF (so the FEM takes its one-rank path), and every rank gets
 // every task's result back, in task order. A task's result is an opaque string (the caller
-// serializes, e.g. with result_codec.h); the shared files are then written by rank 0 alone
+// serializes, e.g. with core/binary_archive.h); the shared files are then written by rank 0 alone
 // (core/output_guard.h) from the gathered results.
 #include <mpi.h>
 

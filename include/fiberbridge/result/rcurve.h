@@ -100,4 +100,20 @@ double note_zone_resolution(SimulationResult& result, double spacing,
 void withdraw_steady_state(SimulationResult& result, SteadyStateStatus status,
                            const std::string& reason);
 
+/// One stretch of a traced R curve that a test under load-point opening control jumps over (a
+/// snap-back; row indices). The models trace the equilibrium path under crack-length control;
+/// where the load-point opening falls below an earlier one, such a test cannot follow: it jumps
+/// at the earlier maximum to the first later state with that opening, or runs out of the curve.
+struct SnapBack {
+  std::size_t from;   ///< the last row before the opening falls: the largest opening so far
+  std::size_t lowest; ///< the row of the lowest opening inside the stretch
+  /// The first later row whose opening is back to at least rows[from]'s; rows.size() when the
+  /// curve ends first. The rows strictly between `from` and `to` are the ones jumped over.
+  std::size_t to;
+};
+
+/// The snap-backs of `rows` in order (one detector for every model's note; source/result/
+/// snap_back.cc). Rows whose opening is NaN neither start nor continue one.
+std::vector<SnapBack> find_snap_backs(const std::vector<RCurvePoint>& rows);
+
 } // namespace fiberbridge::result
