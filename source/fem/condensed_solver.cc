@@ -5,6 +5,10 @@
 #include "fiberbridge/core/error.h"
 
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_templates.h>
+#include <deal.II/lac/trilinos_index_access.h>
+
+#include <Epetra_CrsMatrix.h>
 
 #include <algorithm>
 #include <cmath>
@@ -187,8 +191,9 @@ public:
 
 private:
   /// Relative residual of the dense solve above which it is refined once: a few hundred times
-  /// the round-off of a fresh inverse (measured 1e-13 to 1e-12 on the seed mesh).
-  static constexpr double kRefine = 1e-11;
+  /// the round-off of a fresh inverse (measured 3e-13 on the seed mesh), 10 times below the
+  /// largest error accepted.
+  static constexpr double kRefine = 1e-10;
   /// ... and after refinement, above which the inverse is formed again: far below what Newton
   /// notices (a step exact to 1e-9 relative converges as the exact one), far above round-off.
   static constexpr double kMaxDrift = 1e-9;
@@ -215,10 +220,17 @@ private:
     std::vector<std::vector<std::pair<unsigned, double>>> lower(n_i_);
     kbi_.assign(m_, {});
     std::vector<double> S(std::size_t(m_) * m_, 0.0);
-    for (unsigned r = 0; r < n; ++r)
-      for (auto it = K.begin(r); it != K.end(r); ++it) {
-        const unsigned c = it->column();
-        const double v = it->value();
+    // The rows by Epetra's local views (deal.II's row iterator copies each row per entry).
+    const Epetra_CrsMatrix& A = K.trilinos_matrix();
+    for (int lr = 0; lr < A.NumMyRows(); ++lr) {
+      int count = 0;
+      double* values = nullptr;
+      int* columns = nullptr;
+      A.ExtractMyRowView(lr, count, values, columns);
+      const unsigned r = TrilinosWrappers::global_row_index(A, lr);
+      for (int e = 0; e < count; ++e) {
+        const unsigned c = TrilinosWrappers::global_column_index(A, columns[e]);
+        const double v = values[e];
         if (v == 0)
           continue;
         if (ipos[r] >= 0 && ipos[c] >= 0) {
@@ -229,6 +241,7 @@ private:
         else if (bpos[r] >= 0 && bpos[c] >= 0)
           S[std::size_t(bpos[r]) * m_ + bpos[c]] += v;
       }
+    }
     chol_.factorize(lower);
     // S = K_BB - K_BI K_II^-1 K_IB, a column per B dof (K_IB = K_BI^T: K is symmetric); each
     // right-hand side sits in one arm near its dof, so the solve covers that arm's band only.
@@ -334,20 +347,38 @@ private:
         var_.push_back(k);
       }
     f_ = var_.size();
-    FullMatrix<double> M(f_, f_);
     for (unsigned a = 0; a < f_; ++a)
       for (unsigned b = 0; b < f_; ++b)
-        M(a, b) = mf_[std::size_t(a) * m_ + b] = sp_[std::size_t(var_[a]) * m_ + var_[b]];
+        g_[std::size_t(a) * m_ + b] = mf_[std::size_t(a) * m_ + b] =
+            sp_[std::size_t(var_[a]) * m_ + var_[b]];
     for (unsigned p = 0; p < point_vars_.size(); ++p)
       if (tangents[p] != 0)
         for (const auto& [i, ni] : point_vars_[p])
           for (const auto& [j, nj] : point_vars_[p])
             if (pos_[i] >= 0 && pos_[j] >= 0)
-              M(pos_[i], pos_[j]) += tangents[p] * ni * nj;
-    M.gauss_jordan();
-    for (unsigned a = 0; a < f_; ++a)
-      for (unsigned b = 0; b < f_; ++b)
-        g_[std::size_t(a) * m_ + b] = M(a, b);
+              g_[std::size_t(pos_[i]) * m_ + pos_[j]] += tangents[p] * ni * nj;
+    // Cholesky (LAPACK potrf + potri, half the work of LU) where M is positive definite, as at
+    // the start of a run (no softening point yet); Gauss-Jordan otherwise.
+    const types::blas_int n = f_, lda = m_;
+    types::blas_int info = 0;
+    std::vector<double> copy(g_.begin(), g_.begin() + std::size_t(f_) * m_);
+    potrf("U", &n, g_.data(), &lda, &info);
+    if (info == 0)
+      potri("U", &n, g_.data(), &lda, &info);
+    if (info == 0) { // the upper triangle in column-major = the lower one here: mirror it
+      for (unsigned a = 0; a < f_; ++a)
+        for (unsigned b = 0; b < a; ++b)
+          g_[std::size_t(b) * m_ + a] = g_[std::size_t(a) * m_ + b];
+    } else {
+      FullMatrix<double> M(f_, f_);
+      for (unsigned a = 0; a < f_; ++a)
+        for (unsigned b = 0; b < f_; ++b)
+          M(a, b) = copy[std::size_t(a) * m_ + b];
+      M.gauss_jordan();
+      for (unsigned a = 0; a < f_; ++a)
+        for (unsigned b = 0; b < f_; ++b)
+          g_[std::size_t(a) * m_ + b] = M(a, b);
+    }
     applied_ = tangents;
     ++stats_.n_factorizations;
   }
@@ -416,12 +447,15 @@ private:
   /// G is symmetric (M is); the updates use rows for columns, so round-off asymmetry would feed
   /// back into every later update: average it out.
   void symmetrize() {
-    for (unsigned i = 0; i < f_; ++i)
-      for (unsigned j = 0; j < i; ++j) {
-        double& a = g_[std::size_t(i) * m_ + j];
-        double& b = g_[std::size_t(j) * m_ + i];
-        a = b = 0.5 * (a + b);
-      }
+    constexpr unsigned tile = 32; // in tiles: the column walk stays in cache
+    for (unsigned i0 = 0; i0 < f_; i0 += tile)
+      for (unsigned j0 = 0; j0 <= i0; j0 += tile)
+        for (unsigned i = i0; i < std::min(f_, i0 + tile); ++i)
+          for (unsigned j = j0; j < std::min(i, j0 + tile); ++j) {
+            double& a = g_[std::size_t(i) * m_ + j];
+            double& b = g_[std::size_t(j) * m_ + i];
+            a = b = 0.5 * (a + b);
+          }
   }
 
   /// A release frees the released pairs' jumps: the new unknowns N border the system,
@@ -458,16 +492,8 @@ private:
       }
     }
     std::vector<std::vector<double>> gb(q, std::vector<double>(f_, 0.0));
-    for (unsigned i = 0; i < f_; ++i) {
-      const double* gi = g_.data() + std::size_t(i) * m_;
-      for (unsigned l = 0; l < q; ++l) {
-        double s = 0;
-        const double* bl = b[l].data();
-        for (unsigned j = 0; j < f_; ++j)
-          s += gi[j] * bl[j];
-        gb[l][i] = s;
-      }
-    }
+    for (unsigned l = 0; l < q; ++l)
+      symmetric_multiply(g_, b[l], gb[l]);
     FullMatrix<double> s(q, q);
     for (unsigned l1 = 0; l1 < q; ++l1)
       for (unsigned l2 = 0; l2 < q; ++l2) {
@@ -538,26 +564,30 @@ private:
     }
   }
 
+  /// v = G r as a sum of rows (G is symmetric): axpy loops vectorize, dot products (a chain of
+  /// dependent additions) do not.
   void multiply_inverse(const std::vector<double>& r, std::vector<double>& v) const {
-    for (unsigned a = 0; a < f_; ++a) {
-      const double* ga = g_.data() + std::size_t(a) * m_;
-      double s = 0;
-      for (unsigned b = 0; b < f_; ++b)
-        s += ga[b] * r[b];
-      v[a] = s;
+    symmetric_multiply(g_, r, v);
+  }
+
+  void symmetric_multiply(const std::vector<double>& A, const std::vector<double>& x,
+                          std::vector<double>& y) const {
+    double* out = y.data();
+    std::fill(out, out + f_, 0.0);
+    for (unsigned b = 0; b < f_; ++b) {
+      const double xb = x[b];
+      if (xb == 0)
+        continue;
+      const double* ab = A.data() + std::size_t(b) * m_;
+      for (unsigned a = 0; a < f_; ++a)
+        out[a] += xb * ab[a];
     }
   }
 
   /// |M v - r| / |r| for the right-hand side rv_ (M v kept in mv_), M = S'_FF + the applied
   /// tangents.
   double drift(const std::vector<double>& v) {
-    for (unsigned a = 0; a < f_; ++a) {
-      const double* sa = mf_.data() + std::size_t(a) * m_;
-      double s = 0;
-      for (unsigned b = 0; b < f_; ++b)
-        s += sa[b] * v[b];
-      mv_[a] = s;
-    }
+    symmetric_multiply(mf_, v, mv_);
     for (unsigned p = 0; p < point_vars_.size(); ++p)
       if (applied_[p] != 0) {
         double o = 0;
