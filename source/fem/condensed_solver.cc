@@ -114,6 +114,7 @@ class Condensed : public JacobianSolver {
 public:
   Condensed(CondensedArms arms, TimerOutput& timer) : arms_(std::move(arms)), timer_(timer) {
     setup();
+    read_constraints(); // the initial tie set: refused here (ComputationError) if not ours
   }
 
   bool needs_spd_tangents() const override { return false; }

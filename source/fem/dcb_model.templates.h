@@ -1017,12 +1017,22 @@ result::SimulationResult DcbModel<dim>::run() {
     }
     // ~ one factorization worth of solves (2D); in 3D a branch change happens at every z point of
     // a station, hence the cap per z station.
-    if (linear_solver_ == FemParameters::Linear::Solver::condensed)
-      solver_ = make_condensed_solver(condensed_arms(), timer_);
-    else
+    make_constraints(0.0, hom_);
+    if (linear_solver_ == FemParameters::Linear::Solver::condensed) {
+      try {
+        solver_ = make_condensed_solver(condensed_arms(), timer_);
+      } catch (const ComputationError& e) {
+        // A mesh or constraint the condensed arms do not take (condensed_solver.h): auto falls
+        // back to klu with a note; an explicit choice fails with the reason.
+        if (prm_.linear.solver != FemParameters::Linear::Solver::automatic)
+          throw;
+        linear_solver_ = FemParameters::Linear::Solver::klu;
+        result_.notes.push_back(std::string("FEM/Linear solver = auto took klu: ") + e.what());
+      }
+    }
+    if (!solver_)
       solver_ = make_jacobian_solver(prm_, *this, 12 * crack_.n_z(), std::move(modes), timer_);
   }
-  make_constraints(0.0, hom_);
   if (prm_.virtual_dic.settings.enabled) {
     if (output_dir_.empty())
       throw InputError("FEM/Virtual DIC/Enabled: the virtual test writes into the output "

@@ -197,7 +197,7 @@ void FemParameters::Nonlinear::validate() const {
 }
 
 void FemParameters::Linear::declare_parameters(dealii::ParameterHandler& prm) {
-  prm.declare_entry("Linear solver", "klu",
+  prm.declare_entry("Linear solver", "auto",
                     dealii::Patterns::Selection("auto|klu|umfpack|mumps|cg_amg|condensed"),
                     "Solver of the Jacobian systems: condensed (the linear elastic arms condensed "
                     "onto the crack plane once per mesh, a dense inverse of the crack-plane system "

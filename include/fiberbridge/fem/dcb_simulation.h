@@ -123,7 +123,7 @@ struct FemParameters {
       condensed, ///< the arms condensed onto the crack plane (2D, one rank, small strain)
       automatic  ///< auto: condensed where it applies, else klu (resolved by the model)
     };
-    Solver solver = Solver::klu;
+    Solver solver = Solver::automatic;
     /// cg_amg only: CG stops at this residual relative to the right-hand side.
     double tolerance = 1e-10;
 
