@@ -1018,6 +1018,14 @@ result::SimulationResult DcbModel<dim>::run() {
     // ~ one factorization worth of solves (2D); in 3D a branch change happens at every z point of
     // a station, hence the cap per z station.
     make_constraints(0.0, hom_);
+    // auto: the dense crack-plane system costs O(m^3) once and O(m^2) per release and solve;
+    // past about a thousand crack-plane dofs (fine or quadratic meshes on long ligaments) the
+    // sparse factorizations are cheaper, above all on short runs (measured: the thin-composite
+    // refinement ladder, Q2 down to 0.5 mm, took 13 times longer condensed).
+    constexpr std::size_t kAutoMaxCondensedDofs = 1000;
+    if (prm_.linear.solver == FemParameters::Linear::Solver::automatic &&
+        crack_.dofs().size() > kAutoMaxCondensedDofs)
+      linear_solver_ = FemParameters::Linear::Solver::klu;
     if (linear_solver_ == FemParameters::Linear::Solver::condensed) {
       try {
         solver_ = make_condensed_solver(condensed_arms(), timer_);
