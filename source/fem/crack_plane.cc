@@ -430,6 +430,26 @@ void CrackPlane<dim>::station_opening_operator(unsigned ix, double width, const 
 }
 
 template <int dim>
+std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
+CrackPlane<dim>::node_pairs() const {
+  std::vector<std::pair<dof_index, dof_index>> pairs;
+  for (const auto& n : nodes_)
+    for (unsigned d = 0; d < dim; ++d)
+      pairs.emplace_back(n.top[d], n.bottom[d]);
+  return pairs;
+}
+
+template <int dim>
+std::vector<std::pair<types::global_dof_index, double>>
+CrackPlane<dim>::point_weights(unsigned p) const {
+  std::vector<std::pair<dof_index, double>> w;
+  const auto& map = point_map_[p];
+  for (unsigned a = 0; a < map.nodes.size(); ++a)
+    w.emplace_back(nodes_[map.nodes[a]].top[1], map.N[a]);
+  return w;
+}
+
+template <int dim>
 std::vector<double> CrackPlane<dim>::node_openings(const Vec& u_ghost) const {
   std::vector<double> o(nodes_.size());
   for (unsigned a = 0; a < nodes_.size(); ++a)

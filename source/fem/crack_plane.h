@@ -72,6 +72,13 @@ public:
   void station_opening_operator(unsigned ix, double width, const dealii::IndexSet& owned,
                                 Vec& c) const;
 
+  /// (top, bottom) dofs of every crack-plane node and component: the pairs the ties hold
+  /// together (the condensed solver's jump variables, condensed_solver.h).
+  std::vector<std::pair<dof_index, dof_index>> node_pairs() const;
+  /// The nodes of interface point p: (top dof of the opening component, Lagrange weight); the
+  /// opening is the sum of weight * (top - bottom).
+  std::vector<std::pair<dof_index, double>> point_weights(unsigned p) const;
+
   // Measurements (u ghosted, identical on every rank).
   std::vector<double> node_openings(const Vec& u_ghost) const;
   std::vector<double> openings(const Vec& u_ghost) const;

@@ -6,6 +6,7 @@
 // dcb_model_3d.cc. The pieces it drives have files of their own: dcb_geometry.h (the slit
 // mesh), crack_plane.h (ties, release, the interface), jacobian_solver.h (the linear solver
 // strategy), equilibrium_problem.h (Newton and KINSOL), j_integrals.h, field_output.h.
+#include "condensed_solver.h"
 #include "crack_plane.h"
 #include "dcb_geometry.h"
 #include "equilibrium_problem.h"
@@ -73,6 +74,8 @@ private:
                          dealii::TrilinosWrappers::SparseMatrix& jacobian) override;
   void opening_operator(unsigned p, Vec& c) override;
   const dealii::IndexSet& owned_dofs() const override { return owned_; }
+  /// What FEM/Linear solver = condensed reads (condensed_solver.h).
+  CondensedArms condensed_arms() const;
   // Algebra.
   double gsum(double local) const { return broadcast_sum(local, comm_); }
   void condense(const Vec& full, Vec& out);
@@ -174,6 +177,8 @@ private:
   double last_contraction_ = 1;
   unsigned chord_steps_ = 0;
   std::unique_ptr<JacobianSolver> solver_;
+  /// FEM/Linear solver with auto resolved (the constructor).
+  FemParameters::Linear::Solver linear_solver_ = FemParameters::Linear::Solver::klu;
 
   Vec u_, u_ghost_, scratch_ghost_, residual_ghost_;
   double opening_ = 0;

@@ -75,6 +75,18 @@ DcbModel<dim>::DcbModel(const specimen::Specimen& specimen, const specimen::Mate
   // node is tied, so the traction there acts on both sides of one node and cancels, and the tip
   // J's crack-face term integrates the law's sigma(0+) at the tip point.
   law_ = &law::discrete_law(law, result_.notes);
+  // FEM/Linear solver: auto takes the condensed arms where they apply (docs/design.md section
+  // 2, "Condensed arms (issue 34 item 3)"); an explicit condensed that cannot apply is refused.
+  using LS = FemParameters::Linear::Solver;
+  const bool condensable = dim == 2 && n_ranks_ == 1 && !finite_;
+  linear_solver_ = prm_.linear.solver;
+  if (linear_solver_ == LS::automatic)
+    linear_solver_ = condensable ? LS::condensed : LS::klu;
+  else if (linear_solver_ == LS::condensed && !condensable)
+    throw InputError("FEM/Linear solver = condensed: applies to 2D runs on one MPI rank with "
+                     "FEM/Kinematics = small only (this run: " +
+                     std::to_string(dim) + "D, " + std::to_string(n_ranks_) + " ranks, " +
+                     (finite_ ? "finite" : "small") + " kinematics); use auto or klu");
   for (const auto& note : prm_.deprecation_notes)
     result_.notes.push_back(note);
 }
@@ -337,6 +349,24 @@ void DcbModel<dim>::assemble_jacobian(const std::vector<double>& tangents,
     }
   crack_.add_jacobian(tangents, hom_, jacobian);
   jacobian.compress(VectorOperation::add);
+}
+
+template <int dim>
+CondensedArms DcbModel<dim>::condensed_arms() const {
+  CondensedArms arms;
+  arms.bulk = &bulk_;
+  arms.constraints = &hom_;
+  arms.boundary = crack_.dofs();
+  arms.pairs = crack_.node_pairs();
+  for (unsigned p = 0; p < crack_.n_points(); ++p)
+    arms.points.push_back(crack_.point_weights(p));
+  // One rank: the owned dofs are all dofs, by index.
+  arms.order.resize(owned_support_.size());
+  for (unsigned k = 0; k < owned_support_.size(); ++k) {
+    const auto& sp = owned_support_[k];
+    arms.order[owned_.nth_index_in_set(k)] = {{owned_arm_[k], sp[1], sp[3], sp[2], sp[0]}};
+  }
+  return arms;
 }
 
 template <int dim>
@@ -969,7 +999,7 @@ result::SimulationResult DcbModel<dim>::run() {
         prm_.mesh.degree, prm_.interface.subintervals, geometry_.x_lines, geometry_.z_lines, owned_,
         specimen_.initial_crack);
     RigidBodyModes modes;
-    if (prm_.linear.solver == FemParameters::Linear::Solver::cg_amg) {
+    if (linear_solver_ == FemParameters::Linear::Solver::cg_amg) {
       modes.dim = dim;
       modes.owned_support = owned_support_;
       modes.centre = {{0.5 * specimen_.length, 0.0, 0.5 * (dim == 3 ? specimen_.width : 0.0)}};
@@ -978,9 +1008,30 @@ result::SimulationResult DcbModel<dim>::run() {
     }
     // ~ one factorization worth of solves (2D); in 3D a branch change happens at every z point of
     // a station, hence the cap per z station.
-    solver_ = make_jacobian_solver(prm_, *this, 12 * crack_.n_z(), std::move(modes), timer_);
+    make_constraints(0.0, hom_);
+    // auto: the dense crack-plane system costs O(m^3) once and O(m^2) per release and solve;
+    // past about a thousand crack-plane dofs (fine or quadratic meshes on long ligaments) the
+    // sparse factorizations are cheaper, above all on short runs (measured: the thin-composite
+    // refinement ladder, Q2 down to 0.5 mm, took 13 times longer condensed).
+    constexpr std::size_t kAutoMaxCondensedDofs = 1000;
+    if (prm_.linear.solver == FemParameters::Linear::Solver::automatic &&
+        crack_.dofs().size() > kAutoMaxCondensedDofs)
+      linear_solver_ = FemParameters::Linear::Solver::klu;
+    if (linear_solver_ == FemParameters::Linear::Solver::condensed) {
+      try {
+        solver_ = make_condensed_solver(condensed_arms(), timer_);
+      } catch (const ComputationError& e) {
+        // A mesh or constraint the condensed arms do not take (condensed_solver.h): auto falls
+        // back to klu with a note; an explicit choice fails with the reason.
+        if (prm_.linear.solver != FemParameters::Linear::Solver::automatic)
+          throw;
+        linear_solver_ = FemParameters::Linear::Solver::klu;
+        result_.notes.push_back(std::string("FEM/Linear solver = auto took klu: ") + e.what());
+      }
+    }
+    if (!solver_)
+      solver_ = make_jacobian_solver(prm_, *this, 12 * crack_.n_z(), std::move(modes), timer_);
   }
-  make_constraints(0.0, hom_);
   if (prm_.virtual_dic.settings.enabled) {
     if (output_dir_.empty())
       throw InputError("FEM/Virtual DIC/Enabled: the virtual test writes into the output "
@@ -1116,11 +1167,19 @@ void DcbModel<dim>::summarize(Clock::time_point start) {
   result_.wall_time_s = seconds_since(start);
   // The wall time of rank 0 is the run's (all ranks end together at the last collective).
   MPI_Bcast(&result_.wall_time_s, 1, MPI_DOUBLE, 0, comm_);
-  const char* solver_name = prm_.linear.solver == FemParameters::Linear::Solver::mumps
-                                ? "Trilinos Amesos MUMPS (distributed)"
-                            : prm_.linear.solver == FemParameters::Linear::Solver::klu
-                                ? "Trilinos Amesos KLU (gathered on one rank)"
-                                : "CG + Trilinos ML AMG on the secant (SPD) Jacobian";
+  using LS = FemParameters::Linear::Solver;
+  const std::string solver_name =
+      linear_solver_ == LS::mumps ? "Trilinos Amesos MUMPS (distributed)"
+      : linear_solver_ == LS::klu ? "Trilinos Amesos KLU (gathered on one rank)"
+      : linear_solver_ == LS::condensed
+          ? "arms condensed onto the crack plane (FEM/Linear solver = condensed" +
+                std::string(prm_.linear.solver == LS::automatic ? ", chosen by auto" : "") + ": " +
+                std::to_string(stats.n_factorizations) + " dense inverses, " +
+                std::to_string(stats.n_bordered) + " bordered releases, " +
+                std::to_string(stats.n_low_rank) + " low-rank tangent updates, " +
+                std::to_string(stats.n_refinements) + " refined solves, " +
+                std::to_string(stats.n_drift_refreshes) + " refreshes for round-off drift)"
+          : "CG + Trilinos ML AMG on the secant (SPD) Jacobian";
   result_.method.push_back(
       "distributed engine: " + std::to_string(dim) + "D, " + std::to_string(n_ranks_) +
       " MPI ranks, parallel::distributed::Triangulation (p4est), Trilinos MPI matrices, " +

@@ -35,6 +35,11 @@ public:
 struct JacobianSolverStats {
   unsigned n_factorizations = 0; ///< Jacobian assemblies + factorizations (or AMG setups)
   unsigned n_linear_solves = 0;
+  // FEM/Linear solver = condensed (condensed_solver.h): its updates of the explicit inverse.
+  unsigned n_bordered = 0;        ///< releases taken by bordering
+  unsigned n_low_rank = 0;        ///< low-rank updates for tangent changes
+  unsigned n_refinements = 0;     ///< solves refined once for round-off drift
+  unsigned n_drift_refreshes = 0; ///< inverses formed again for round-off drift
 };
 
 class JacobianSolver {

@@ -197,8 +197,14 @@ void FemParameters::Nonlinear::validate() const {
 }
 
 void FemParameters::Linear::declare_parameters(dealii::ParameterHandler& prm) {
-  prm.declare_entry("Linear solver", "klu", dealii::Patterns::Selection("klu|umfpack|mumps|cg_amg"),
-                    "Solver of the Jacobian systems: klu (Trilinos Amesos KLU; on several ranks "
+  prm.declare_entry("Linear solver", "auto",
+                    dealii::Patterns::Selection("auto|klu|umfpack|mumps|cg_amg|condensed"),
+                    "Solver of the Jacobian systems: condensed (the linear elastic arms condensed "
+                    "onto the crack plane once per mesh, a dense inverse of the crack-plane system "
+                    "updated at each release and tangent change; the same systems as klu, several "
+                    "times faster; 2D, one MPI rank, Kinematics = small only, else an input "
+                    "error); auto (condensed where it applies, else klu); klu (Trilinos Amesos "
+                    "KLU; on several ranks "
                     "the matrix is gathered on one), mumps (Trilinos Amesos MUMPS, distributed "
                     "direct; the choice for MPI runs), both with a low-rank (Woodbury) update "
                     "between factorizations; or cg_amg (CG with Trilinos ML AMG: the Jacobian is "
@@ -219,7 +225,11 @@ void FemParameters::Linear::parse_parameters(dealii::ParameterHandler& prm,
                                              std::vector<std::string>& notes) {
   // The patterns admit only these values.
   const std::string ls = prm.get("Linear solver");
-  solver = ls == "mumps" ? Solver::mumps : ls == "cg_amg" ? Solver::cg_amg : Solver::klu;
+  solver = ls == "mumps"       ? Solver::mumps
+           : ls == "cg_amg"    ? Solver::cg_amg
+           : ls == "condensed" ? Solver::condensed
+           : ls == "auto"      ? Solver::automatic
+                               : Solver::klu;
   if (ls == "umfpack")
     notes.push_back("FEM/Linear solver = umfpack is deprecated: ran klu (the one "
                     "engine's direct solvers are klu and mumps)");

@@ -179,6 +179,9 @@ struct LinearSofteningRun {
   LinearSofteningRun() {
     prm.mesh.element_size = 1 * mm;
     prm.steady_state.window = 8 * mm;
+    // klu, not the default auto (condensed here): the reference of KluAndMumpsGiveTheSameRCurve;
+    // condensed against klu: condensed_solver_tests.cc.
+    prm.linear.solver = fem::FemParameters::Linear::Solver::klu;
     result = fem::simulate_dcb(spec, wood, law, j_tip, prm,
                                std::getenv("FEMOUT") ? std::getenv("FEMOUT") : "", {}, details);
   }
@@ -405,7 +408,7 @@ TEST(FemDcb, NewtonFailureIsDiagnosed) {
 // agree to 1e-8 relative (a systematic difference, e.g. a stale factorization, shows as 1e-4).
 TEST(FemDcb, KluAndMumpsGiveTheSameRCurve) {
   const auto& run = linear_softening();
-  ASSERT_EQ(run.prm.linear.solver, fem::FemParameters::Linear::Solver::klu); // the default
+  ASSERT_EQ(run.prm.linear.solver, fem::FemParameters::Linear::Solver::klu);
   fem::FemParameters prm = run.prm;
   prm.linear.solver = fem::FemParameters::Linear::Solver::mumps;
   const auto r = fem::simulate_dcb(run.spec, run.wood, run.law, run.j_tip, prm);
@@ -475,7 +478,8 @@ TEST(FemParameters, SolverChoices) {
   fem::FemParameters::declare_parameters(prm);
   fem::FemParameters p;
   p.parse_parameters(prm);
-  EXPECT_EQ(p.linear.solver, fem::FemParameters::Linear::Solver::klu);
+  // auto: condensed where it applies, else klu (issue 34 item 3).
+  EXPECT_EQ(p.linear.solver, fem::FemParameters::Linear::Solver::automatic);
   EXPECT_EQ(p.nonlinear.solver, fem::FemParameters::Nonlinear::Solver::newton);
   // umfpack: a deprecated alias of klu (issue 14), noted.
   prm.parse_input_from_string("set Linear solver = umfpack\nset Nonlinear solver = kinsol\n");

@@ -117,11 +117,13 @@ struct FemParameters {
     /// and take the interface points that change branch in between as a low-rank (Woodbury)
     /// update (FEM/Linear solver = umfpack is a deprecated alias of klu).
     enum class Solver {
-      klu,   ///< Trilinos Amesos KLU (on several ranks the matrix is gathered on one)
-      mumps, ///< Trilinos Amesos MUMPS, distributed
-      cg_amg ///< CG + Trilinos ML AMG on an SPD (secant) Jacobian
+      klu,       ///< Trilinos Amesos KLU (on several ranks the matrix is gathered on one)
+      mumps,     ///< Trilinos Amesos MUMPS, distributed
+      cg_amg,    ///< CG + Trilinos ML AMG on an SPD (secant) Jacobian
+      condensed, ///< the arms condensed onto the crack plane (2D, one rank, small strain)
+      automatic  ///< auto: condensed where it applies, else klu (resolved by the model)
     };
-    Solver solver = Solver::klu;
+    Solver solver = Solver::automatic;
     /// cg_amg only: CG stops at this residual relative to the right-hand side.
     double tolerance = 1e-10;
 

@@ -1,0 +1,44 @@
+#pragma once
+// FEM/Linear solver = condensed (docs/design.md section 2, "Condensed arms (issue 34 item 3)"):
+// the JacobianSolver strategy that condenses the linear elastic arms onto the crack plane. The
+// dofs split into B (crack-plane dofs of both arms, load-line dofs: every dof a constraint or an
+// interface opening touches) and I (the rest). The bulk block K_II never changes: it is factorized
+// once (a profile Cholesky: each arm is a slender band), and the Schur complement
+// S = K_BB - K_BI K_II^-1 K_IB is formed once per mesh. On B the unknowns are each crack-plane
+// pair's bottom displacement and its jump (top - bottom): a tie then fixes a jump at zero, so the
+// tied condensed system is S (in these unknowns) restricted to the free ones plus the interface
+// tangents. Its inverse is kept explicitly: a release adds the released jumps as new unknowns
+// (a bordered inverse, O(m^2)); a tangent change is a low-rank update on the jumps it touches
+// (O(k m^2)). The model's algorithm (Newton, controls, J, outputs) is untouched: this strategy
+// solves the same systems as klu, without assembling or factorizing the Trilinos Jacobian.
+// Serial (one rank), small-strain kinematics only.
+#include "jacobian_solver.h"
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <array>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace fiberbridge::fem {
+
+/// What the condensed strategy reads from the model (all on one rank; dofs are global indices).
+struct CondensedArms {
+  using dof_index = dealii::types::global_dof_index;
+  const dealii::TrilinosWrappers::SparseMatrix* bulk = nullptr; ///< K, unconstrained
+  /// The homogeneous constraints of the current tie set (read again at each new epoch).
+  const dealii::AffineConstraints<double>* constraints = nullptr;
+  std::vector<dof_index> boundary;                    ///< B: crack-plane and load-line dofs
+  std::vector<std::pair<dof_index, dof_index>> pairs; ///< (top, bottom) crack-plane pairs
+  /// Per interface point: (top dof of the opening component, weight) of its nodes.
+  std::vector<std::vector<std::pair<dof_index, double>>> points;
+  /// Per dof: sort key (arm, x, z, y, component) ordering I into slender bands.
+  std::vector<std::array<double, 5>> order;
+};
+
+std::unique_ptr<JacobianSolver> make_condensed_solver(CondensedArms arms,
+                                                      dealii::TimerOutput& timer);
+
+} // namespace fiberbridge::fem
