@@ -128,11 +128,11 @@ CampaignSpecimen load_campaign_specimen(const CampaignRow& row, const RawRecordO
       if (records.size() != 1)
         throw InputError(row.file + " holds " + std::to_string(records.size()) +
                          " records; a manifest row is one specimen");
-      TestSpecimen spec = raw.specimen;
+      specimen::Specimen spec = raw.specimen;
       if (std::isfinite(row.width))
         spec.width = row.width;
       if (std::isfinite(row.arm_thickness))
-        spec.arm_thickness = row.arm_thickness;
+        spec.height = 2 * row.arm_thickness; // both arms
       const ReducedRecord rr = reduce_record(records.front(), spec, raw.reduce);
       if (!rr.delta_root.empty()) {
         s.curve = to_rdelta({rr}, row.file).replicates.front();

@@ -288,13 +288,14 @@ double equivalent_at(const TestRecord& rec, std::size_t i, const CbbmBeam& beam,
 
 } // namespace
 
-ReducedRecord reduce_record(const TestRecord& rec, const TestSpecimen& sp, const ReduceOptions& o) {
+ReducedRecord reduce_record(const TestRecord& rec, const specimen::Specimen& sp,
+                            const ReduceOptions& o) {
   Setup s;
   s.src = rec.source + " (record '" + rec.name + "')";
-  sp.check(s.src);
+  sp.check_test_geometry(s.src);
   s.o = &o;
   s.B = sp.width;
-  s.h = sp.arm_thickness;
+  s.h = sp.arm_thickness();
   s.l1 = std::isnan(sp.pin_to_arm_midplane) ? s.h / 2 : sp.pin_to_arm_midplane;
   s.blocks = !std::isnan(sp.pin_to_block_edge);
   s.l2 = s.blocks ? sp.pin_to_block_edge : 0.0;

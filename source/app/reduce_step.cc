@@ -224,7 +224,7 @@ void plot(const ReduceOutcome& r, const std::string& out_dir, Json& summary) {
 ReduceOutcome run_reduce(const ReduceStepOptions& o, const std::string& out_dir, Json& summary) {
   if (o.files.empty())
     throw InputError(o.where + ": no record files given");
-  o.specimen.check(o.where);
+  o.specimen.check_test_geometry(o.where);
   ReduceOutcome r;
   for (const auto& f : o.files)
     for (auto& rec : analysis::read_test_records(f, o.read))
@@ -249,7 +249,7 @@ ReduceOutcome run_reduce(const ReduceStepOptions& o, const std::string& out_dir,
 
   Json block;
   block["width_mm"] = o.specimen.width / mm;
-  block["arm_thickness_mm"] = o.specimen.arm_thickness / mm;
+  block["arm_thickness_mm"] = o.specimen.arm_thickness() / mm;
   block["plateau_definition"] = "mean over the last " + std::to_string(o.reduce.plateau_fraction) +
                                 " of each record's crack extension";
   block["initiation_definition"] =

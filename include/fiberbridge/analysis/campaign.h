@@ -57,7 +57,8 @@ SpecimenInput classify_specimen_file(const std::string& path);
 /// How raw records are read and reduced (the scene's Test section and Specimen).
 struct RawRecordOptions {
   RecordReadOptions read;
-  TestSpecimen specimen; ///< per-row width / arm thickness override it
+  /// Per-row width / arm thickness override it; nothing known by default (Specimen::unknown).
+  specimen::Specimen specimen = specimen::Specimen::unknown();
   ReduceOptions reduce;
 };
 
