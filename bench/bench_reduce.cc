@@ -90,10 +90,10 @@ std::string slurp(const std::string& path) {
   return b.str();
 }
 
-analysis::TestSpecimen specimen() {
-  analysis::TestSpecimen s;
+specimen::Specimen test_specimen() {
+  auto s = specimen::Specimen::unknown();
   s.width = B;
-  s.arm_thickness = h;
+  s.height = 2 * h; // both arms
   return s;
 }
 
@@ -137,12 +137,12 @@ void BM_ReduceRecord(benchmark::State& state) {
   const auto rec = analysis::read_test_records(path).at(0);
   std::remove(path.c_str());
   for (auto _ : state) {
-    const auto r = analysis::reduce_record(rec, specimen());
+    const auto r = analysis::reduce_record(rec, test_specimen());
     benchmark::DoNotOptimize(r.R_energy.data());
   }
   // The answer beside the time: the closed-form R curve runs from 866 to 892 J/m^2 over the
   // last third of the growth (mean about 880 J/m^2).
-  const auto r = analysis::reduce_record(rec, specimen());
+  const auto r = analysis::reduce_record(rec, test_specimen());
   state.counters["rows"] = static_cast<double>(rec.opening.size());
   state.counters["readings"] = static_cast<double>(r.a.size());
   state.counters["plateau_energy_J_m2"] = r.energy.plateau;

@@ -1,5 +1,5 @@
 # The library graph (docs/design.md section 4), one-way:
-#   core <- law <- result <- analysis ; core <- specimen ;
+#   core <- law <- result <- analysis ; core <- specimen <- analysis ;
 #   law + specimen + result <- beam, mpm, fem (each on its own) ;
 #   core <- dic (DIC frames) ; analysis + beam <- identify ; everything <- app.
 # FIBERBRIDGE_LAYER_<lib> lists the libraries whose headers the sources of <lib> may include
@@ -10,7 +10,7 @@ set(FIBERBRIDGE_LAYER_core "")
 set(FIBERBRIDGE_LAYER_law core)
 set(FIBERBRIDGE_LAYER_specimen core)
 set(FIBERBRIDGE_LAYER_result law core)
-set(FIBERBRIDGE_LAYER_analysis result law core)
+set(FIBERBRIDGE_LAYER_analysis result specimen law core)
 set(FIBERBRIDGE_LAYER_dic core)
 set(FIBERBRIDGE_LAYER_beam result specimen law core)
 set(FIBERBRIDGE_LAYER_mpm result specimen law core)

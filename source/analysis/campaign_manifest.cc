@@ -145,11 +145,11 @@ CampaignSpecimen load_campaign_specimen(const CampaignRow& row, const RawRecordO
       if (records.size() != 1)
         throw InputError(row.file + " holds " + std::to_string(records.size()) +
                          " records; a manifest row is one specimen");
-      TestSpecimen spec = raw.specimen;
+      specimen::Specimen spec = raw.specimen;
       if (std::isfinite(row.width))
         spec.width = row.width;
       if (std::isfinite(row.arm_thickness))
-        spec.arm_thickness = row.arm_thickness;
+        spec.height = 2 * row.arm_thickness; // both arms
       if (std::isfinite(row.length))
         spec.length = row.length;
       // The row's a0 replaces the Specimen's where the reduction uses the Specimen's (Test/Use

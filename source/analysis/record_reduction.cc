@@ -6,6 +6,7 @@
 #include "fiberbridge/analysis/line_fit.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
+#include "fiberbridge/specimen/large_displacement.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,22 +78,12 @@ struct Setup {
   double B = 0, h = 0, l1 = 0, l2 = 0;
   bool blocks = false;
   const ReduceOptions* o = nullptr;
-  /// ISO 15024's F and N (record_reduction.h).
+  /// ISO 15024's F and N (specimen/large_displacement.h), 1 when the correction is off.
   double F(double d, double a) const {
-    return o->large_displacement_correction ? 1 - 0.3 * (d / a) * (d / a) - 1.5 * (d * l1 / (a * a))
-                                            : 1.0;
+    return o->large_displacement_correction ? specimen::large_displacement_F(d, a, l1) : 1.0;
   }
-  // N is not only the end-block correction: its last term, -9/35 (delta/a)^2, is the
-  // arms' own geometric stiffening (the load-line opening of an elastica falls behind the linear
-  // cantilever's), so it applies with hinges too (l2 = 0). F alone overcorrects: F/N, not F, is
-  // the ratio of the exact G of the elastica to 3 P delta / (2 B a) (to 0.05 % at delta/a = 0.5,
-  // RecordReduction.ElasticaDcbIsReducedExactlyWithFOverN).
   double N(double d, double a) const {
-    if (!o->large_displacement_correction)
-      return 1.0;
-    const double r = l2 / a;
-    return 1 - r * r * r - 9.0 / 8.0 * (1 - r * r) * d * l1 / (a * a) -
-           9.0 / 35.0 * (d / a) * (d / a);
+    return o->large_displacement_correction ? specimen::end_block_N(d, a, l1, l2) : 1.0;
   }
 };
 
@@ -297,13 +288,14 @@ double equivalent_at(const TestRecord& rec, std::size_t i, const CbbmBeam& beam,
 
 } // namespace
 
-ReducedRecord reduce_record(const TestRecord& rec, const TestSpecimen& sp, const ReduceOptions& o) {
+ReducedRecord reduce_record(const TestRecord& rec, const specimen::Specimen& sp,
+                            const ReduceOptions& o) {
   Setup s;
   s.src = rec.source + " (record '" + rec.name + "')";
-  sp.check(s.src);
+  sp.check_test_geometry(s.src);
   s.o = &o;
   s.B = sp.width;
-  s.h = sp.arm_thickness;
+  s.h = sp.arm_thickness();
   s.l1 = std::isnan(sp.pin_to_arm_midplane) ? s.h / 2 : sp.pin_to_arm_midplane;
   s.blocks = !std::isnan(sp.pin_to_block_edge);
   s.l2 = s.blocks ? sp.pin_to_block_edge : 0.0;

@@ -22,12 +22,6 @@ const char* const our_columns[] = {"time_s", "opening_mm",    "load_N",
 /// A column map may come from a command line as well as a scene: line ends are blanks too.
 constexpr const char* map_blanks = " \t\r\n";
 
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
 std::string stem(const std::string& path) {
   const auto slash = path.find_last_of('/');
   std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
@@ -109,25 +103,6 @@ std::vector<std::size_t> crack_reading_rows(const TestRecord& r) {
     }
   }
   return rows;
-}
-
-void TestSpecimen::check(const std::string& where_) const {
-  if (std::isnan(width))
-    throw InputError(where_ + ": the specimen width is missing; give Specimen/Width (mm) or "
-                              "--width MM");
-  if (std::isnan(arm_thickness))
-    throw InputError(where_ + ": the arm thickness is missing; give Specimen/Height (mm, both "
-                              "arms) or --arm-thickness MM");
-  const std::pair<const char*, double> values[] = {{"width", width},
-                                                   {"arm thickness", arm_thickness},
-                                                   {"length", length},
-                                                   {"initial crack", initial_crack},
-                                                   {"pin to arm mid-plane", pin_to_arm_midplane},
-                                                   {"pin to block edge", pin_to_block_edge}};
-  for (const auto& [name, v] : values)
-    if (!std::isnan(v) && !(v > 0))
-      throw InputError(where_ + ": the specimen " + name + " is " + num(v / units::mm) +
-                       " mm; expected a positive length");
 }
 
 } // namespace fiberbridge::analysis

@@ -285,8 +285,8 @@ int cmd_reduce(const std::vector<std::string>& args) {
   o.where = "fiberbridge reduce";
   o.files = vm["records"].as<std::vector<std::string>>();
   o.specimen.width = vm.count("width") ? vm["width"].as<double>() * units::mm : NAN;
-  o.specimen.arm_thickness =
-      vm.count("arm-thickness") ? vm["arm-thickness"].as<double>() * units::mm : NAN;
+  o.specimen.height = // both arms
+      vm.count("arm-thickness") ? 2 * vm["arm-thickness"].as<double>() * units::mm : NAN;
   o.read.columns = analysis::RecordColumnMap::parse(vm["columns"].as<std::string>(), "--columns");
   const double w = vm["smoothing-window"].as<double>();
   o.reduce.smoothing_window = w > 0 ? w * units::mm : NAN;

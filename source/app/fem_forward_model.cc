@@ -25,8 +25,8 @@ identify::ForwardModel fem_forward_model(fem::FemParameters parameters) {
     fem::FemParameters p = parameters;
     if (p.mesh.automatic_size())
       p.mesh.element_size = fem::arm_element_size(specimen, p);
-    const auto run = fem::simulate_dcb_distributed(specimen, material, law::NoBridgingLaw(), 100, p,
-                                                   "", {}, MPI_COMM_SELF);
+    const auto run =
+        fem::simulate_dcb(specimen, material, law::NoBridgingLaw(), 100, p, "", {}, MPI_COMM_SELF);
     if (run.rcurve.empty() || !(run.rcurve.front().load > 0))
       throw ComputationError("FEM forward model: the LEFM run for the initial compliance gave "
                              "no state");
@@ -45,8 +45,7 @@ identify::ForwardModel fem_forward_model(fem::FemParameters parameters) {
     // the whole record, so the window spans the record's crack growth (the run then ends one zone
     // length or more past `reach`, or where the ligament runs out).
     p.steady_state.window = std::max(p.steady_state.window, reach - specimen.initial_crack);
-    auto run =
-        fem::simulate_dcb_distributed(specimen, material, law, j_tip, p, "", {}, MPI_COMM_SELF);
+    auto run = fem::simulate_dcb(specimen, material, law, j_tip, p, "", {}, MPI_COMM_SELF);
     // A run that says it cannot be trusted (the zone spans too few elements, or the energy ledger
     // does not close) is a failed trial, as a law the beam cannot follow: its curves would steer
     // the optimizer with a discretization error.

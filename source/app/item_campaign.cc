@@ -213,7 +213,7 @@ CampaignInputs campaign_inputs(SceneContext& ctx) {
   in.raw.read = t.read_options(ctx.scene_file);
   const specimen::Specimen s = ctx.specimen();
   in.raw.specimen.width = s.width;
-  in.raw.specimen.arm_thickness = s.arm_thickness();
+  in.raw.specimen.height = s.height;
   in.raw.specimen.length = s.length;
   if (t.use_specimen_initial_crack)
     in.raw.specimen.initial_crack = s.initial_crack;

@@ -2,7 +2,7 @@
 // the simulation with the scene's specimen, material, law and J_tip, and reports through the common
 // simulation writer.
 //
-// One engine (docs/design.md section 2): simulate_dcb_distributed on all ranks of
+// One engine (docs/design.md section 2): simulate_dcb on all ranks of
 // simulation_communicator(): MPI_COMM_WORLD, or MPI_COMM_SELF when the run is one task of several
 // spread over the ranks (task_distributor.h). Under mpirun every rank of that communicator runs
 // this item (the engine is collective); only its rank 0 prints progress, and the file writers are
@@ -66,8 +66,8 @@ result::SimulationResult simulate_fem_law(SceneContext& ctx, const law::Traction
   auto params = fem_parameters(ctx);
   // No files: a virtual DIC test writes only for the scene's own FEM run.
   params.virtual_dic.settings.enabled = false;
-  return fem::simulate_dcb_distributed(ctx.specimen(), ctx.material(), law, j_tip, params, "", {},
-                                       MPI_COMM_SELF);
+  return fem::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip, params, "", {},
+                           MPI_COMM_SELF);
 }
 
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
@@ -86,8 +86,8 @@ void run_fem_item(SceneContext& ctx) {
     progress = [](const std::string& line) { std::cerr << line << '\n'; };
   fem::DistributedRunInfo info;
   result::SimulationResult result =
-      fem::simulate_dcb_distributed(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params,
-                                    ctx.output_dir, progress, comm, &info);
+      fem::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params,
+                        ctx.output_dir, progress, comm, &info);
   report_simulation(ctx, std::move(result), "n_dofs");
   auto& block = ctx.summary["fem"];
   // summary.json keeps the keys of the time there were two engines: "engine" is "distributed",

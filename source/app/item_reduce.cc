@@ -28,7 +28,7 @@ ReduceStepOptions reduce_options(SceneContext& ctx) {
   o.where = ctx.scene_file + ": Specimen";
   const specimen::Specimen s = ctx.specimen();
   o.specimen.width = s.width;
-  o.specimen.arm_thickness = s.arm_thickness();
+  o.specimen.height = s.height;
   o.specimen.length = s.length;
   o.files = t.resolved_files(ctx.scene_file);
   if (o.files.empty())

@@ -10,7 +10,7 @@ namespace fiberbridge::app {
 ReduceOutcome run_reduce(const ReduceStepOptions& o, const std::string& out_dir, Json& summary) {
   if (o.files.empty())
     throw InputError(o.where + ": no record files given");
-  o.specimen.check(o.where);
+  o.specimen.check_test_geometry(o.where);
   // Read every record, reduce each to R(a), average them.
   ReduceOutcome r;
   for (const auto& f : o.files)

@@ -230,7 +230,7 @@ Json reduce_summary(const ReduceStepOptions& o, const ReduceOutcome& r, bool any
                     bool all_root) {
   Json block;
   block["width_mm"] = o.specimen.width / mm;
-  block["arm_thickness_mm"] = o.specimen.arm_thickness / mm;
+  block["arm_thickness_mm"] = o.specimen.arm_thickness() / mm;
   block["plateau_definition"] = "mean over the last " + std::to_string(o.reduce.plateau_fraction) +
                                 " of each record's crack extension";
   block["initiation_definition"] =

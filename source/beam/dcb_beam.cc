@@ -551,7 +551,7 @@ SimulationResult DcbBeamSolver::run() {
   result.model = "beam";
   result.n_dofs_or_particles = static_cast<long>(element_K_.size());
   // A rigid law acts as given from sigma(0+) at the tip node: the one rule of every model.
-  law::discrete_law(*law_, result.notes);
+  law::note_rigid_law_insertion(*law_, result.notes);
   for (const auto& note : prm_.deprecation_notes)
     result.notes.push_back(note);
   const double a0 = specimen_.initial_crack, L = specimen_.length;

@@ -74,7 +74,8 @@ DcbModel<dim>::DcbModel(const specimen::Specimen& specimen, const specimen::Mate
   // sigma(0+), with a note. The tie holds a segment closed until its release; afterwards the tip
   // node is tied, so the traction there acts on both sides of one node and cancels, and the tip
   // J's crack-face term integrates the law's sigma(0+) at the tip point.
-  law_ = &law::discrete_law(law, result_.notes);
+  law_ = &law;
+  law::note_rigid_law_insertion(law, result_.notes);
   // FEM/Linear solver: auto takes the condensed arms where they apply (docs/design.md section
   // 2, "Condensed arms (issue 34 item 3)"); an explicit condensed that cannot apply is refused.
   using LS = FemParameters::Linear::Solver;

@@ -22,11 +22,10 @@ result::SimulationResult run_distributed(const specimen::Specimen&, const specim
 } // namespace distributed
 
 result::SimulationResult
-simulate_dcb_distributed(const specimen::Specimen& specimen, const specimen::Material& material,
-                         const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
-                         const std::string& output_dir,
-                         const std::function<void(const std::string&)>& progress, MPI_Comm comm,
-                         DistributedRunInfo* info, FemRunDetails* details) {
+simulate_dcb(const specimen::Specimen& specimen, const specimen::Material& material,
+             const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
+             const std::string& output_dir, const std::function<void(const std::string&)>& progress,
+             MPI_Comm comm, DistributedRunInfo* info, FemRunDetails* details) {
   fiberbridge::begin_fault_context("fem");
   DistributedRunInfo local_info;
   FemRunDetails local_details;
@@ -61,8 +60,8 @@ result::SimulationResult simulate_dcb(const specimen::Specimen& specimen,
                                       const FemParameters& parameters,
                                       const std::string& output_dir,
                                       const std::function<void(const std::string&)>& progress) {
-  return simulate_dcb_distributed(specimen, material, law, j_tip, parameters, output_dir, progress,
-                                  MPI_COMM_SELF);
+  return simulate_dcb(specimen, material, law, j_tip, parameters, output_dir, progress,
+                      MPI_COMM_SELF);
 }
 
 result::SimulationResult
@@ -70,8 +69,8 @@ simulate_dcb(const specimen::Specimen& specimen, const specimen::Material& mater
              const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
              const std::string& output_dir, const std::function<void(const std::string&)>& progress,
              FemRunDetails& details) {
-  return simulate_dcb_distributed(specimen, material, law, j_tip, parameters, output_dir, progress,
-                                  MPI_COMM_SELF, nullptr, &details);
+  return simulate_dcb(specimen, material, law, j_tip, parameters, output_dir, progress,
+                      MPI_COMM_SELF, nullptr, &details);
 }
 
 } // namespace fiberbridge::fem

@@ -5,6 +5,7 @@
 
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/piecewise_linear_law.h"
+#include "fiberbridge/specimen/large_displacement.h"
 
 #include <algorithm>
 #include <chrono>
@@ -137,8 +138,8 @@ double with_large_displacements(result::SimulationResult& run, double arm_thickn
     // from the small one (the change is O((delta/a)^2), the second pass leaves O((delta/a)^4)).
     double d = d_small, F = 1;
     for (int pass = 0; pass < 2; ++pass) {
-      F = 1 - 0.3 * (d / a) * (d / a) - 1.5 * d * l1 / (a * a);
-      const double N = 1 - 9.0 / 8.0 * d * l1 / (a * a) - 9.0 / 35.0 * (d / a) * (d / a);
+      F = specimen::large_displacement_F(d, a, l1);
+      const double N = specimen::end_block_N(d, a, l1, 0.0);
       d = d_small * N / std::sqrt(F);
     }
     p.load_point_opening = d;

@@ -20,10 +20,9 @@ std::string rigid_law_insertion_note(const TractionLaw& law) {
          " kPa (no elastic rise: the area and Eq. 2 are the law's)";
 }
 
-const TractionLaw& discrete_law(const TractionLaw& law, std::vector<std::string>& notes) {
+void note_rigid_law_insertion(const TractionLaw& law, std::vector<std::string>& notes) {
   if (std::string note = rigid_law_insertion_note(law); !note.empty())
     notes.push_back(std::move(note));
-  return law;
 }
 
 TractionLawPtr with_elastic_rise(const TractionLaw& law, double delta_e, const std::string& key) {

@@ -72,11 +72,12 @@ DcbModel::DcbModel(const specimen::Specimen& s, const specimen::Material& m,
 }
 
 void DcbModel::choose_law() {
-  // The one rule for rigid laws (law::discrete_law, extrinsic insertion): the crack carries the
-  // law as given. A fresh segment starts at sigma(0+) with delta_max = 0; its traction is explicit
-  // and bounded by the law, so a rigid law needs no elastic rise for the time step (the secant of
-  // a segment that closes below its delta_max is bounded the same way).
-  law_ = &law::discrete_law(user_law_, notes_);
+  // The one rule for rigid laws (law::note_rigid_law_insertion, extrinsic insertion): the crack
+  // carries the law as given. A fresh segment starts at sigma(0+) with delta_max = 0; its traction
+  // is explicit and bounded by the law, so a rigid law needs no elastic rise for the time step (the
+  // secant of a segment that closes below its delta_max is bounded the same way).
+  law_ = &user_law_;
+  law::note_rigid_law_insertion(user_law_, notes_);
   for (const auto& n : prm_.deprecation_notes)
     notes_.push_back(n);
 }

@@ -1,10 +1,47 @@
 #include "fiberbridge/specimen/specimen.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/units.h"
 
 #include <cmath>
+#include <sstream>
+#include <utility>
 
 namespace fiberbridge::specimen {
+
+namespace {
+/// A value as the stream prints it (6 significant digits), as the record reader's messages do.
+std::string num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+} // namespace
+
+Specimen Specimen::unknown() {
+  Specimen s;
+  s.length = s.width = s.height = s.initial_crack = NAN;
+  return s;
+}
+
+void Specimen::check_test_geometry(const std::string& where_) const {
+  if (std::isnan(width))
+    throw InputError(where_ + ": the specimen width is missing; give Specimen/Width (mm) or "
+                              "--width MM");
+  if (std::isnan(height))
+    throw InputError(where_ + ": the arm thickness is missing; give Specimen/Height (mm, both "
+                              "arms) or --arm-thickness MM");
+  const std::pair<const char*, double> values[] = {{"width", width},
+                                                   {"arm thickness", arm_thickness()},
+                                                   {"length", length},
+                                                   {"initial crack", initial_crack},
+                                                   {"pin to arm mid-plane", pin_to_arm_midplane},
+                                                   {"pin to block edge", pin_to_block_edge}};
+  for (const auto& [name, v] : values)
+    if (!std::isnan(v) && !(v > 0))
+      throw InputError(where_ + ": the specimen " + name + " is " + num(v / units::mm) +
+                       " mm; expected a positive length");
+}
 
 void Specimen::validate(const std::string& c) const {
   if (!(length > 0 && width > 0 && height > 0 && initial_crack > 0))

@@ -329,7 +329,7 @@ TEST(CampaignManifest, MixedInputsInOneGroupAreAnError) {
   raw.read.columns = RecordColumnMap::parse(
       "time_s: Time, opening_mm: Disp, load_N: Force, a_mm: CrackExt", "test");
   raw.specimen.width = 25e-3;
-  raw.specimen.arm_thickness = 2.7e-3;
+  raw.specimen.height = 2 * 2.7e-3; // both arms
   try {
     analyse_campaign(read_campaign_manifest((d / "m.csv").string()), raw, {}, {});
     ADD_FAILURE() << "mixed inputs accepted";
@@ -461,7 +461,7 @@ TEST(CampaignSpecimen, RawRecordWithDeltaRootGivesRDelta) {
   raw.read.columns = RecordColumnMap::parse(
       "time_s: Time, opening_mm: Disp, load_N: Force, a_mm: CrackExt, delta_root_mm: Root", "t");
   raw.specimen.width = 25e-3;
-  raw.specimen.arm_thickness = 2.7e-3;
+  raw.specimen.height = 2 * 2.7e-3; // both arms
   const auto manifest = read_campaign_manifest((d / "m.csv").string());
   const auto a = load_campaign_specimen(manifest.rows[0], raw);
   EXPECT_EQ(a.input, SpecimenInput::raw_record);

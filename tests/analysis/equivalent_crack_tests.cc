@@ -59,10 +59,10 @@ TestRecord constant_gc_record(bool readings, double a0 = 35 * mm, double a_end =
   return r;
 }
 
-TestSpecimen specimen() {
-  TestSpecimen s;
+specimen::Specimen test_specimen() {
+  auto s = specimen::Specimen::unknown();
   s.width = 25 * mm;
-  s.arm_thickness = 2.7 * mm;
+  s.height = 2 * 2.7 * mm; // both arms
   s.initial_crack = 35 * mm;
   return s;
 }
@@ -105,7 +105,7 @@ TEST(EquivalentCrack, CardanoInvertsTheComplianceAndGIsItsDerivative) {
 // carries a few 1e-4 relative error).
 TEST(EquivalentCrack, RecordWithoutReadingsGivesGcAgainstTheEquivalentCrack) {
   const auto rec = constant_gc_record(false);
-  const auto r = reduce_record(rec, specimen(), linear_options());
+  const auto r = reduce_record(rec, test_specimen(), linear_options());
   EXPECT_EQ(r.crack, "equivalent");
   EXPECT_NEAR(r.flexural_modulus / E, 1, 1e-6);
   ASSERT_GT(r.a.size(), 100u);
@@ -119,7 +119,7 @@ TEST(EquivalentCrack, RecordWithoutReadingsGivesGcAgainstTheEquivalentCrack) {
   }
   EXPECT_NEAR(r.cbbm.plateau / Gc, 1, 1e-3);
   // Without a0 the equivalent crack cannot be calibrated: an InputError, not a guess.
-  TestSpecimen no_a0 = specimen();
+  specimen::Specimen no_a0 = test_specimen();
   no_a0.initial_crack = NAN;
   EXPECT_THROW(reduce_record(rec, no_a0, linear_options()), InputError);
 }
@@ -128,7 +128,7 @@ TEST(EquivalentCrack, RecordWithoutReadingsGivesGcAgainstTheEquivalentCrack) {
 // the MBT fit's |Delta|, which the shear term bends a little: the cube root of a Timoshenko
 // compliance is not quite linear in a; 1 %).
 TEST(EquivalentCrack, BesideMeasuredReadings) {
-  const auto r = reduce_record(constant_gc_record(true), specimen(), linear_options());
+  const auto r = reduce_record(constant_gc_record(true), test_specimen(), linear_options());
   EXPECT_EQ(r.crack, "measured");
   ASSERT_EQ(r.R_CBBM.size(), r.a.size());
   for (std::size_t j = 0; j < r.a.size(); j += 10) {
@@ -144,7 +144,7 @@ TEST(EquivalentCrack, BesideMeasuredReadings) {
 // quite linear in a) for the true chi h (2.95 mm), which puts E_f and G 0.54 % low (measured); by
 // MBT with a0 within 3 % (ASTM's a0 at a crack up to 0.1 mm longer; measured 0.3-0.4 % high).
 TEST(EquivalentCrack, InitiationValuesOfAConstantGcRecord) {
-  const auto r = reduce_record(constant_gc_record(true), specimen(), linear_options());
+  const auto r = reduce_record(constant_gc_record(true), test_specimen(), linear_options());
   const auto& v = r.initiation;
   ASSERT_TRUE(v.nl.found && v.offset5_max.found && v.vis.found);
   EXPECT_EQ(v.offset5_max.definition.rfind("maximum load", 0), 0u);
@@ -161,7 +161,7 @@ TEST(EquivalentCrack, InitiationValuesOfAConstantGcRecord) {
     EXPECT_NEAR(p->G_MBT / Gc, 1, 0.03) << p->definition;
   }
   // Without readings: no VIS, and no MBT.
-  const auto e = reduce_record(constant_gc_record(false), specimen(), linear_options());
+  const auto e = reduce_record(constant_gc_record(false), test_specimen(), linear_options());
   EXPECT_FALSE(e.initiation.vis.found);
   EXPECT_TRUE(std::isnan(e.initiation.offset5_max.G_MBT));
   EXPECT_NEAR(e.initiation.offset5_max.G_CBBM / Gc, 1, 0.005);
@@ -226,8 +226,8 @@ TEST(EquivalentCrack, RowsWithoutReadingsAreNaN) {
   for (auto* v : {&cut.time, &cut.load, &cut.opening, &cut.crack_length})
     v->resize(from);
   cut.line.resize(from);
-  const auto r = reduce_record(lost, specimen(), linear_options());
-  const auto c = reduce_record(cut, specimen(), linear_options());
+  const auto r = reduce_record(lost, test_specimen(), linear_options());
+  const auto c = reduce_record(cut, test_specimen(), linear_options());
   ASSERT_EQ(r.a.size(), c.a.size());
   for (std::size_t j = 0; j < r.a.size(); ++j) {
     EXPECT_EQ(r.a[j], c.a[j]);
@@ -238,7 +238,7 @@ TEST(EquivalentCrack, RowsWithoutReadingsAreNaN) {
   TestRecord none = full;
   for (double& a : none.crack_length)
     a = NAN;
-  const auto e = reduce_record(none, specimen(), linear_options());
+  const auto e = reduce_record(none, test_specimen(), linear_options());
   EXPECT_EQ(e.crack, "equivalent");
   EXPECT_FALSE(e.initiation.vis.found);
   EXPECT_NEAR(e.cbbm.plateau / Gc, 1, 1e-3);

@@ -66,10 +66,10 @@ private:
   std::string path_;
 };
 
-TestSpecimen specimen() { // data/dcb_records/README.md
-  TestSpecimen s;
+specimen::Specimen test_specimen() { // data/dcb_records/README.md
+  auto s = specimen::Specimen::unknown();
   s.width = 25 * mm;
-  s.arm_thickness = 2.7 * mm;
+  s.height = 2 * 2.7 * mm; // both arms
   return s;
 }
 
@@ -120,7 +120,7 @@ TEST(RecordFaults, ZeroOffsetNegativesAreNoise) {
   EXPECT_TRUE(contains(c, "2 negative opening(s) (first on line 2, lowest -0.0002 mm")) << c;
   EXPECT_EQ(r.opening[0], 0.0);
   const auto p = plain();
-  const auto R = reduce_record(r, specimen()), Rp = reduce_record(p, specimen());
+  const auto R = reduce_record(r, test_specimen()), Rp = reduce_record(p, test_specimen());
   // Rows at zero opening add no work: the same R to round-off.
   EXPECT_NEAR(R.mbt.plateau, Rp.mbt.plateau, 1e-9 * Rp.mbt.plateau);
   EXPECT_NEAR(R.energy.plateau, Rp.energy.plateau, 1e-6 * Rp.energy.plateau);
@@ -201,7 +201,7 @@ TEST(RecordFaults, MissingCrackReadingsAreRowsWithoutAReading) {
     EXPECT_TRUE(std::isnan(r.crack_length[k])) << "row " << k;
   EXPECT_EQ(crack_reading_rows(r), crack_reading_rows(p));
   // The same readings, loads and openings: the same R(a).
-  const auto R = reduce_record(r, specimen()), Rp = reduce_record(p, specimen());
+  const auto R = reduce_record(r, test_specimen()), Rp = reduce_record(p, test_specimen());
   ASSERT_EQ(R.R_MBT.size(), Rp.R_MBT.size());
   for (std::size_t i = 0; i < R.R_MBT.size(); ++i) {
     EXPECT_NEAR(R.R_MBT[i], Rp.R_MBT[i], 1e-9 * Rp.R_MBT[i]);
@@ -311,7 +311,7 @@ TEST(RecordFaults, ReZeroedOpeningIsContinued) {
   // reading noise and its rate change over one row: under 0.05 mm on this record.
   for (std::size_t i = 0; i < r.opening.size(); ++i)
     ASSERT_NEAR(r.opening[i], p.opening[i], 0.05 * mm) << "row " << i;
-  const auto R = reduce_record(r, specimen()), Rp = reduce_record(p, specimen());
+  const auto R = reduce_record(r, test_specimen()), Rp = reduce_record(p, test_specimen());
   // 0.05 mm on openings of 10-30 mm changes the compliance by < 0.5 %, MBT G by about as much.
   EXPECT_NEAR(R.mbt.plateau, Rp.mbt.plateau, 0.01 * Rp.mbt.plateau);
 }

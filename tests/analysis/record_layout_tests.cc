@@ -148,10 +148,10 @@ RecordReadOptions with_map(const std::string& map) {
   return o;
 }
 
-TestSpecimen specimen() { // data/dcb_records/README.md
-  TestSpecimen s;
+specimen::Specimen test_specimen() { // data/dcb_records/README.md
+  auto s = specimen::Specimen::unknown();
   s.width = 25 * mm;
-  s.arm_thickness = 2.7 * mm;
+  s.height = 2 * 2.7 * mm; // both arms
   return s;
 }
 
@@ -182,7 +182,7 @@ bool contains(const std::string& s, const std::string& part) {
 TEST(RecordLayouts, EachExportReadsAsThePlainFile) {
   const Raw raw = raw_record();
   const TestRecord plain = read_test_records(shared, with_map(shared_map)).at(0);
-  const ReducedRecord plain_R = reduce_record(plain, specimen());
+  const ReducedRecord plain_R = reduce_record(plain, test_specimen());
   for (const auto& layout : layouts) {
     SCOPED_TRACE(layout.name);
     TempFile f(std::string(layout.name) + ".csv", layout.write(raw));
@@ -194,7 +194,7 @@ TEST(RecordLayouts, EachExportReadsAsThePlainFile) {
     expect_same(r.opening, plain.opening, 1e-7, "opening");
     expect_same(r.load, plain.load, 1e-7, "load");
     expect_same(r.crack_length, plain.crack_length, 1e-7, "crack length");
-    const ReducedRecord R = reduce_record(r, specimen());
+    const ReducedRecord R = reduce_record(r, test_specimen());
     // R(a) from values equal to 1e-7: the energy slope over a window of ~10 readings and the
     // beam-theory fits amplify relative input changes by at most ~100 here, so 1e-5.
     expect_same(R.a, plain_R.a, 1e-7, "a");

@@ -36,10 +36,10 @@ RecordReadOptions shared_columns() {
 }
 
 /// The geometry data/dcb_records/README.md states: width 25 mm, arms 2.7 mm.
-TestSpecimen shared_specimen() {
-  TestSpecimen s;
+specimen::Specimen shared_specimen() {
+  auto s = specimen::Specimen::unknown();
   s.width = 25 * mm;
-  s.arm_thickness = 2.7 * mm;
+  s.height = 2 * 2.7 * mm; // both arms
   s.length = 123 * mm;
   return s;
 }
@@ -150,9 +150,9 @@ TEST(RecordReduction, ElasticaDcbIsReducedExactlyWithFOverN) {
   for (double a = a0 + 0.25 * mm; a <= 120 * mm + 1e-9; a += 0.25 * mm)
     add(exact::elastica_at_G(R, EI, a, B), a);
 
-  TestSpecimen sp;
+  auto sp = specimen::Specimen::unknown();
   sp.width = B;
-  sp.arm_thickness = h;
+  sp.height = 2 * h;             // both arms
   sp.pin_to_arm_midplane = 1e-9; // the elastica is loaded on its mid-plane: l1 -> 0
   double worst_corrected = 0, worst_plain = 0, largest = 0;
   for (bool corrected : {true, false}) {
@@ -253,7 +253,7 @@ TEST(RecordReduction, ReplicatesOnACommonExtensionGrid) {
 
 TEST(RecordReduction, GeometryAndInitialCrackErrors) {
   const auto rec = read_test_records(record_path("DCB-01"), shared_columns()).at(0);
-  TestSpecimen s = shared_specimen();
+  specimen::Specimen s = shared_specimen();
   s.width = NAN;
   EXPECT_THROW(reduce_record(rec, s), InputError);
   s = shared_specimen();
@@ -316,7 +316,7 @@ TEST(RecordReduction, SharedRecordsWithoutTheCrackColumn) {
     const auto with = reduce_record(rec, shared_specimen());
     TestRecord bare = rec;
     bare.crack_length.clear();
-    TestSpecimen sp = shared_specimen();
+    specimen::Specimen sp = shared_specimen();
     sp.initial_crack = rec.crack_length.front();
     ReduceOptions o;
     o.shear_modulus = 2.29e9;

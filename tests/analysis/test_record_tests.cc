@@ -263,24 +263,6 @@ TEST(TestRecordReader, TooFewRows) {
   EXPECT_TRUE(contains(m, "has 3 rows after cleaning (lines 2-4)")) << m;
 }
 
-TEST(TestSpecimenCheck, WidthAndArmThicknessAreRequired) {
-  TestSpecimen s;
-  s.arm_thickness = 2.7 * mm;
-  try {
-    s.check("scene.prm: Specimen");
-    FAIL() << "no error without a width";
-  } catch (const InputError& e) {
-    EXPECT_TRUE(contains(e.what(), "scene.prm: Specimen: the specimen width is missing"));
-  }
-  s.width = 25 * mm;
-  s.arm_thickness = NAN;
-  EXPECT_THROW(s.check("x"), InputError);
-  s.arm_thickness = -1 * mm;
-  EXPECT_THROW(s.check("x"), InputError);
-  s.arm_thickness = 2.7 * mm;
-  EXPECT_NO_THROW(s.check("x"));
-}
-
 TEST(TestRecordReader, SharedRealRecords) {
   // The bundled records (data/dcb_records/README.md) read with the map their README gives; the
   // cleaning they need is the crack tracking stepping back by up to 0.5 mm and the crosshead stop.

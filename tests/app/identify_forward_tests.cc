@@ -45,9 +45,8 @@ TEST(IdentifyForwardModel, FemRecordIdentifiedWithTheFem) {
   fem::FemParameters fp;
   fp.mesh.element_size = 2.5 * mm;
   const auto specimen = record_specimen();
-  const auto run =
-      fem::simulate_dcb_distributed(specimen, record_material(25e9), law::make_trilinear(truth),
-                                    j_tip, fp, "", {}, MPI_COMM_SELF);
+  const auto run = fem::simulate_dcb(specimen, record_material(25e9), law::make_trilinear(truth),
+                                     j_tip, fp, "", {}, MPI_COMM_SELF);
   ASSERT_TRUE(run.reached_steady_state);
   analysis::SyntheticRecordOptions ro; // as IdentifyFromFem: a 1 Hz machine, 0.5 N load noise
   ro.sampling_rate_hz = 1;

@@ -76,9 +76,9 @@ TEST(EquivalentCrackFromBeam, PlateauAgainstGssAndTheZoneLength) {
     TestRecord rec = true_crack_record(sim, 5);
     const std::vector<double> tip = rec.crack_length;
     rec.crack_length.clear();
-    TestSpecimen sp;
+    auto sp = specimen::Specimen::unknown();
     sp.width = s.width;
-    sp.arm_thickness = s.arm_thickness();
+    sp.height = s.height;
     sp.initial_crack = sim.rcurve.front().a;
     const auto r = reduce_record(rec, sp, cbbm_options());
     ASSERT_EQ(r.crack, "equivalent");
@@ -171,9 +171,9 @@ TEST(EquivalentCrackFromBeam, DirectEnergyOnStepwiseLaggingReadings) {
     model_a.push_back(q.a);
     model_R.push_back(q.R_energy);
   }
-  TestSpecimen sp;
+  auto sp = specimen::Specimen::unknown();
   sp.width = 25 * mm;
-  sp.arm_thickness = 2.7 * mm;
+  sp.height = 2 * 2.7 * mm; // both arms
   struct Style {
     double max_interval, max_lag, quantum;
   };

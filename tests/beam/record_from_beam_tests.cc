@@ -52,9 +52,9 @@ TEST(RecordFromBeam, ReduceRecoversTheModelsEnergyRCurve) {
     std::remove(path.c_str());
     EXPECT_EQ(rec.delta_root.empty(), !root);
 
-    TestSpecimen sp;
+    auto sp = specimen::Specimen::unknown();
     sp.width = 25 * mm;
-    sp.arm_thickness = 2.7 * mm;
+    sp.height = 2 * 2.7 * mm; // both arms
     const auto r = reduce_record(rec, sp);
     std::vector<double> model_a, model_R;
     for (const auto& q : sim.rcurve) {
@@ -152,9 +152,9 @@ TEST(RecordFromBeam, EnergyBandCoversTheKnownCurve) {
     model_a.push_back(q.a);
     model_R.push_back(q.R_energy);
   }
-  TestSpecimen sp;
+  auto sp = specimen::Specimen::unknown();
   sp.width = 25 * mm;
-  sp.arm_thickness = 2.7 * mm;
+  sp.height = 2 * 2.7 * mm; // both arms
   const std::pair<double, double> cases[] = {
       {0.0, 5 * mm}, {0.3 * mm, 5 * mm}, {0.3 * mm, 12 * mm}};
   for (const auto& [drift, correlation] : cases) {

@@ -343,9 +343,9 @@ TEST_F(DicEndToEnd, Eq6LawFromDicMatchesTheFemsOwnRecord) {
   dic::write_dic_record(own_path, own_rows, {"dic_end_to_end_tests: the FEM's truth"});
   // The record through the reader reduce uses, the direct-energy R(a), R(delta_root).
   const auto rec = analysis::read_test_records(r.record_path).at(0);
-  analysis::TestSpecimen ts;
+  auto ts = specimen::Specimen::unknown();
   ts.width = run_->spec.width;
-  ts.arm_thickness = run_->spec.arm_thickness();
+  ts.height = run_->spec.height;
   // The automatic smoothing window is 4 arm thicknesses (40 mm here), made for the seed's laws
   // whose zones span 50-100 mm; this law's zone is 16 mm long and R(a) rises over it, so a
   // 40 mm window smears the rise and puts R(delta_root)'s plateau at twice delta_c (measured

@@ -94,9 +94,9 @@ TEST(FemDistributed, LowRankUpdateMatchesAmgRefactorization2D) {
   const auto law = short_trilinear();
   auto prm = distributed_parameters();
   prm.linear.solver = fem::FemParameters::Linear::Solver::klu;
-  const auto d = fem::simulate_dcb_distributed(spec, wood, law, 200, prm, "", {}, MPI_COMM_SELF);
+  const auto d = fem::simulate_dcb(spec, wood, law, 200, prm, "", {}, MPI_COMM_SELF);
   prm.linear.solver = fem::FemParameters::Linear::Solver::cg_amg;
-  const auto s = fem::simulate_dcb_distributed(spec, wood, law, 200, prm, "", {}, MPI_COMM_SELF);
+  const auto s = fem::simulate_dcb(spec, wood, law, 200, prm, "", {}, MPI_COMM_SELF);
   print("cg_amg", s);
   ASSERT_GE(s.rcurve.size(), 10u);
   EXPECT_TRUE(s.reached_steady_state);
@@ -124,12 +124,12 @@ TEST(FemDistributed, Lefm3dFollowsCorrectedBeamTheory) {
   prm.mesh.dimension = 3;
   prm.mesh.width_elements = 4;
   fem::DistributedRunInfo info;
-  const auto r = fem::simulate_dcb_distributed(spec, wood, law::NoBridgingLaw(), j_tip, prm, "", {},
-                                               MPI_COMM_SELF, &info);
+  const auto r =
+      fem::simulate_dcb(spec, wood, law::NoBridgingLaw(), j_tip, prm, "", {}, MPI_COMM_SELF, &info);
   print("3D LEFM", r);
   prm.mesh.dimension = 2;
-  const auto r2 = fem::simulate_dcb_distributed(spec, wood, law::NoBridgingLaw(), j_tip, prm, "",
-                                                {}, MPI_COMM_SELF);
+  const auto r2 =
+      fem::simulate_dcb(spec, wood, law::NoBridgingLaw(), j_tip, prm, "", {}, MPI_COMM_SELF);
   EXPECT_EQ(info.dimension, 3u);
   ASSERT_GE(r.rcurve.size(), 4u);
   ASSERT_EQ(r.rcurve.size(), r2.rcurve.size());
@@ -169,12 +169,12 @@ TEST(FemDistributed, Thin3dReproducesPlaneStress) {
       wood.nu_LR = 0;
       wood.nu_RT = 0;
     }
-    const auto r2 = fem::simulate_dcb_distributed(spec, wood, law, 200, prm, "", {}, MPI_COMM_SELF);
+    const auto r2 = fem::simulate_dcb(spec, wood, law, 200, prm, "", {}, MPI_COMM_SELF);
     ASSERT_GE(r2.rcurve.size(), 10u);
     EXPECT_TRUE(r2.reached_steady_state);
     prm.mesh.dimension = 3;
     prm.mesh.width_elements = 1;
-    const auto r3 = fem::simulate_dcb_distributed(spec, wood, law, 200, prm, "", {}, MPI_COMM_SELF);
+    const auto r3 = fem::simulate_dcb(spec, wood, law, 200, prm, "", {}, MPI_COMM_SELF);
     const double diff = max_rel_diff(r2, r3);
     std::cout << "  " << (coupled ? "with" : "without")
               << " Poisson coupling to z: max relative difference 3D thin vs 2D plane stress "
@@ -280,10 +280,10 @@ TEST_F(FemMpi, TwoRanksGiveTheOneRankRCurve2D) {
   const auto law = short_trilinear();
   const auto prm = distributed_parameters();
   fem::DistributedRunInfo i1, i2;
-  const auto r1 = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
-                                                MPI_COMM_SELF, &i1);
-  const auto r2 = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
-                                                MPI_COMM_WORLD, &i2);
+  const auto r1 =
+      fem::simulate_dcb(spec, specimen::Material(), law, 200, prm, "", {}, MPI_COMM_SELF, &i1);
+  const auto r2 =
+      fem::simulate_dcb(spec, specimen::Material(), law, 200, prm, "", {}, MPI_COMM_WORLD, &i2);
   EXPECT_EQ(i1.n_ranks, 1u);
   EXPECT_EQ(i2.n_ranks, world_size());
   print("2 ranks", r2);
@@ -302,11 +302,11 @@ TEST_F(FemMpi, KinsolOnTwoRanksAgreesWithNewton) {
   const auto spec = short_dcb();
   const auto law = short_trilinear();
   auto prm = distributed_parameters();
-  const auto n = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
-                                               MPI_COMM_WORLD);
+  const auto n =
+      fem::simulate_dcb(spec, specimen::Material(), law, 200, prm, "", {}, MPI_COMM_WORLD);
   prm.nonlinear.solver = fem::FemParameters::Nonlinear::Solver::kinsol;
-  const auto k = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
-                                               MPI_COMM_WORLD);
+  const auto k =
+      fem::simulate_dcb(spec, specimen::Material(), law, 200, prm, "", {}, MPI_COMM_WORLD);
   ASSERT_GE(n.rcurve.size(), 10u);
   const double diff = max_rel_diff(n, k);
   std::cout << "  KINSOL vs Newton on " << world_size() << " ranks: max relative difference "
@@ -330,10 +330,10 @@ TEST_F(FemMpi, TwoRanksGiveTheOneRankRCurve3D) {
   // the 10 mm arms, indicator 0.012, and a 3D Q2 run on 2 oversubscribed ranks takes minutes).
   prm.mesh.degree = 1;
   prm.steady_state.window = 8 * mm;
-  const auto r1 = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
-                                                MPI_COMM_SELF);
-  const auto r2 = fem::simulate_dcb_distributed(spec, specimen::Material(), law, 200, prm, "", {},
-                                                MPI_COMM_WORLD);
+  const auto r1 =
+      fem::simulate_dcb(spec, specimen::Material(), law, 200, prm, "", {}, MPI_COMM_SELF);
+  const auto r2 =
+      fem::simulate_dcb(spec, specimen::Material(), law, 200, prm, "", {}, MPI_COMM_WORLD);
   print("3D, 2 ranks", r2);
   ASSERT_GE(r1.rcurve.size(), 5u);
   const double diff = max_rel_diff(r1, r2);

@@ -44,9 +44,9 @@ TEST(EquivalentCrackFromFem, PlateauAgainstGssAndTheZoneLength) {
     TestRecord rec = make_synthetic_record(sim, so, "fem");
     const std::vector<double> tip = rec.crack_length;
     rec.crack_length.clear();
-    TestSpecimen sp;
+    auto sp = specimen::Specimen::unknown();
     sp.width = s.width;
-    sp.arm_thickness = s.arm_thickness();
+    sp.height = s.height;
     sp.initial_crack = sim.rcurve.front().a;
     ReduceOptions o;
     o.large_displacement_correction = false; // the FEM is geometrically linear

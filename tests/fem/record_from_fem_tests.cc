@@ -59,9 +59,9 @@ TEST(RecordFromFem, ReduceRecoversTheFemEnergyRCurve) {
               sim.rcurve.front().R_energy, sim.rcurve[n - 1].R_energy);
   sim.rcurve.resize(n);
   const auto rec = fem_record(sim, "fem");
-  TestSpecimen sp;
+  auto sp = specimen::Specimen::unknown();
   sp.width = s.width;
-  sp.arm_thickness = s.arm_thickness();
+  sp.height = s.height;
   const auto r = reduce_record(rec, sp);
   std::vector<double> fa, fR, rel;
   for (const auto& q : sim.rcurve) {
@@ -118,9 +118,9 @@ TEST(RecordFromFem, EndBlocksNeedNoCorrectionForDirectEnergy) {
   auto sim = fem::simulate_dcb(s, thin_dcb_case::material(), law::NoBridgingLaw(), j_tip, prm);
   sim.rcurve.resize(thin_dcb_case::rising_part(sim).rcurve.size());
   const auto rec = fem_record(sim, "blk");
-  TestSpecimen sp;
+  auto sp = specimen::Specimen::unknown();
   sp.width = s.width;
-  sp.arm_thickness = s.arm_thickness();
+  sp.height = s.height;
   const auto plain = reduce_record(rec, sp);
   sp.pin_to_block_edge = 7 * s.initial_crack / 18; // l2: the block's 7 elements of a0 / 18
   sp.pin_to_arm_midplane = 1e-6; // the load acts on the end face, not on a pin above the arm

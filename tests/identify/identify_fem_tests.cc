@@ -152,9 +152,9 @@ TEST(IdentifyFromFem, ThreeRoutesWithDeltaRoot) {
   print("FEM rows", own_routes);
 
   // The record: direct-energy R(a) at the scene's default window, paired with delta_root.
-  analysis::TestSpecimen ts;
+  auto ts = specimen::Specimen::unknown();
   ts.width = record_specimen().width;
-  ts.arm_thickness = record_specimen().arm_thickness();
+  ts.height = record_specimen().height;
   const auto reduced = analysis::reduce_record(rec, ts);
   const auto laws = extract(analysis::to_rdelta({reduced}, "record"), k);
   // Route 3: the identification, which does not see delta_root. One start (the test above

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 using namespace fiberbridge;
 using namespace fiberbridge::law;
@@ -18,6 +19,17 @@ TEST(RigidLaw, InsertionNoteOnlyForRigidLaws) {
   EXPECT_NE(n.find("400 kPa"), std::string::npos) << n;
   EXPECT_EQ(rigid_law_insertion_note(make_bilinear(0.1e-3, 600e3, 2e-3)), "");
   EXPECT_EQ(rigid_law_insertion_note(NoBridgingLaw()), "");
+}
+
+TEST(RigidLaw, ModelsNoteOnlyARigidLaw) {
+  // note_rigid_law_insertion appends the insertion note for a rigid law and nothing otherwise.
+  std::vector<std::string> notes{"earlier"};
+  note_rigid_law_insertion(make_bilinear(0.1e-3, 600e3, 2e-3), notes);
+  EXPECT_EQ(notes.size(), 1u);
+  const auto lin = make_linear_softening(400e3, 1e-3);
+  note_rigid_law_insertion(lin, notes);
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_EQ(notes[1], rigid_law_insertion_note(lin));
 }
 
 TEST(RigidLaw, ElasticRiseWithStatedAreaChange) {

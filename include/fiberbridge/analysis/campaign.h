@@ -63,7 +63,9 @@ SpecimenInput classify_specimen_file(const std::string& path);
 /// How raw records are read and reduced (the scene's Test section and Specimen).
 struct RawRecordOptions {
   RecordReadOptions read;
-  TestSpecimen specimen; ///< per-row width / arm thickness / length / a0 override it
+  /// Per-row width / arm thickness / length / a0 override it; nothing known by default
+  /// (Specimen::unknown).
+  specimen::Specimen specimen = specimen::Specimen::unknown();
   ReduceOptions reduce;
   /// A DIC set's test record (its frames through the DIC step and matched to its machine record,
   /// as `dic` hands `reduce` one); the app provides it (the dic library sits above analysis).

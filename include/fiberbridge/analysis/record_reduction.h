@@ -6,6 +6,7 @@
 #include "fiberbridge/analysis/initiation_values.h"
 #include "fiberbridge/analysis/rdelta_data.h"
 #include "fiberbridge/analysis/test_record.h"
+#include "fiberbridge/specimen/specimen.h"
 
 #include <string>
 #include <vector>
@@ -32,7 +33,7 @@ struct ReduceOptions {
   double transverse_modulus = NAN;
   /// |Delta| for CBBM [m]; NaN: as above (MBT's, else chi h, else 0 with a note).
   double root_rotation = NAN;
-  /// a0 [m] of a record without crack readings when TestSpecimen::initial_crack is NaN (the
+  /// a0 [m] of a record without crack readings when the specimen's initial_crack is NaN (the
   /// scene's Specimen/Initial crack, which records with readings replace by their first reading).
   double initial_crack_without_readings = NAN;
   /// Steps of the equivalent crack at which a record without readings is reduced [m]; NaN: h/10.
@@ -101,17 +102,18 @@ struct ReducedRecord {
 ///  - MCC: G = 3 P^2 (C/N)^(2/3) F / (2 A1 B 2h), A1 the slope of a/(2h) against (C/N)^(1/3);
 ///  - F = 1 - 3/10 (delta/a)^2 - 3/2 (delta l1/a^2),
 ///    N = 1 - (l2/a)^3 - 9/8 (1 - (l2/a)^2) delta l1/a^2 - 9/35 (delta/a)^2
-///    (l1, l2 from TestSpecimen; l1 = h/2 and l2 = 0 without blocks). F/N is checked against the
-///    exact elastica of a DCB arm (tests/analysis/record_reduction_tests.cc).
+///    (l1, l2 from the specimen's pin distances; l1 = h/2 and l2 = 0 without blocks). F/N is
+///    checked against the exact elastica of a DCB arm (tests/analysis/record_reduction_tests.cc).
 /// CBBM (equivalent_crack.h) beside: E_f from the initial compliance at a0 + |Delta|, a_eq from
 /// the compliance (opening - offset)/(load N) at each row, G by CBBM x F/N; direct energy against
 /// a_eq too. A record without crack readings (crack_length empty, or use_equivalent_crack) is
 /// reduced against a_eq alone: rows where the running maximum of a_eq passes a0 + k
 /// equivalent_step. ASTM D5528 initiation values (initiation_values.h) on every record.
-/// Throws InputError (naming the record's file) if the geometry fails TestSpecimen::check, a0
-/// from the specimen lies beyond the first readings, or fewer than 5 readings lie beyond a0
-/// (equivalent: fewer than 5 steps of a_eq beyond a0, or no initial linear part).
-ReducedRecord reduce_record(const TestRecord& record, const TestSpecimen& specimen,
+/// Throws InputError (naming the record's file) if the geometry fails
+/// specimen::Specimen::check_test_geometry, a0 from the specimen lies beyond the first readings, or
+/// fewer than 5 readings lie beyond a0 (equivalent: fewer than 5 steps of a_eq beyond a0, or no
+/// initial linear part).
+ReducedRecord reduce_record(const TestRecord& record, const specimen::Specimen& specimen,
                             const ReduceOptions& options = {});
 
 /// Replicates on a common crack-extension grid: each method's mean and sample standard

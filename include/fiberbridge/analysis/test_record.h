@@ -107,22 +107,4 @@ std::vector<TestRecord> read_test_records(const std::string& path,
 /// repeating a stale reading are skipped). Empty when the record has no crack readings.
 std::vector<std::size_t> crack_reading_rows(const TestRecord& r);
 
-/// Specimen geometry a reduction needs, SI. NaN means "not given".
-struct TestSpecimen {
-  double width = NAN;         ///< B [m]
-  double arm_thickness = NAN; ///< h, thickness of one arm [m] (the specimen is 2h thick)
-  double length = NAN;        ///< [m], informative
-  double initial_crack = NAN; ///< a0 from the load line [m]; NaN: each record's first reading
-  /// l1 of ASTM D5528 / ISO 15024: load-pin axis to the arm's mid-plane [m]; NaN: h/2 (a hinge
-  /// on the arm's surface)
-  double pin_to_arm_midplane = NAN;
-  /// l2 of ASTM D5528 / ISO 15024: load-pin axis to the end block's inner edge [m]; NaN: no
-  /// end blocks (hinges): l2 = 0 in N
-  double pin_to_block_edge = NAN;
-
-  /// Throws InputError naming `where` when width or arm thickness is missing or not positive,
-  /// or a given length, initial crack or pin distance is not positive.
-  void check(const std::string& where) const;
-};
-
 } // namespace fiberbridge::analysis

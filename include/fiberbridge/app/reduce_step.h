@@ -4,6 +4,7 @@
 #include "fiberbridge/analysis/record_reduction.h"
 #include "fiberbridge/analysis/test_record.h"
 #include "fiberbridge/core/summary.h"
+#include "fiberbridge/specimen/specimen.h"
 
 #include <string>
 #include <vector>
@@ -13,7 +14,8 @@ namespace fiberbridge::app {
 struct ReduceStepOptions {
   std::vector<std::string> files;
   analysis::RecordReadOptions read;
-  analysis::TestSpecimen specimen;
+  /// Nothing known by default (Specimen::unknown): the scene or the command line fills it.
+  specimen::Specimen specimen = specimen::Specimen::unknown();
   analysis::ReduceOptions reduce;
   std::string where = "reduce"; ///< names the geometry's origin in messages (scene or CLI)
 };

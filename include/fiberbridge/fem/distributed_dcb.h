@@ -36,15 +36,15 @@ struct DistributedRunInfo {
   double element_size = 0; ///< the crack-plane element after the snap to the notch [m]
 };
 
-/// Runs the model of simulate_dcb() on the ranks of `comm` (every rank calls it and gets the
-/// same result). Output (VTU pieces per rank + .pvtu + .pvd, fem_interface.csv) goes to
-/// `output_dir` unless empty; only rank 0 writes the shared files. `progress` is called on
-/// rank 0 only.
+/// The FEM run of a DCB on the ranks of `comm` (every rank calls it and gets the same result);
+/// the overloads without a communicator (dcb_simulation.h) call it on MPI_COMM_SELF. Output (VTU
+/// pieces per rank + .pvtu + .pvd, fem_interface.csv) goes to `output_dir` unless empty; only
+/// rank 0 writes the shared files. `progress` is called on rank 0 only. (It was
+/// `simulate_dcb_distributed`, from when a serial engine existed beside this one; issue 30.)
 result::SimulationResult
-simulate_dcb_distributed(const specimen::Specimen& specimen, const specimen::Material& material,
-                         const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
-                         const std::string& output_dir,
-                         const std::function<void(const std::string&)>& progress, MPI_Comm comm,
-                         DistributedRunInfo* info = nullptr, FemRunDetails* details = nullptr);
+simulate_dcb(const specimen::Specimen& specimen, const specimen::Material& material,
+             const law::TractionLaw& law, double j_tip, const FemParameters& parameters,
+             const std::string& output_dir, const std::function<void(const std::string&)>& progress,
+             MPI_Comm comm, DistributedRunInfo* info = nullptr, FemRunDetails* details = nullptr);
 
 } // namespace fiberbridge::fem

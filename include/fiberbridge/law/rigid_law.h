@@ -17,21 +17,21 @@
 
 namespace fiberbridge::law {
 
-/// The one rule: the law a model puts on its crack for the scene's `law`. It is `law` itself,
-/// rigid or not (extrinsic insertion); for a rigid law the insertion note
-/// (rigid_law_insertion_note) is added to `notes`. Every model calls this once, before its first
-/// step, and uses what it returns.
-const TractionLaw& discrete_law(const TractionLaw& law, std::vector<std::string>& notes);
+/// The one rule: a model puts the scene's `law` itself on its crack, rigid or not (extrinsic
+/// insertion); for a rigid law it says so in its notes. Every model calls this once, before its
+/// first step: it adds the insertion note (rigid_law_insertion_note) to `notes` when `law` is
+/// rigid. (It replaced `discrete_law`, which returned `law` unchanged.)
+void note_rigid_law_insertion(const TractionLaw& law, std::vector<std::string>& notes);
 
-/// The note discrete_law adds when it inserts `law` extrinsically; empty when the law is not rigid
-/// (it has its own elastic rise, or no bridging).
+/// The note note_rigid_law_insertion adds when it inserts `law` extrinsically; empty when the law
+/// is not rigid (it has its own elastic rise, or no bridging).
 std::string rigid_law_insertion_note(const TractionLaw& law);
 
 /// A rigid law with an elastic rise from (0,0) to (delta_e, sigma(delta_e)) (a polyline stays a
 /// polyline; other laws are wrapped in law::ElasticRiseLaw, which refers to `law`: it must outlive
 /// the result); nullptr when `law` is not rigid. Throws InputError naming `key` when delta_e is not
 /// positive or not before the law's first kink. For comparisons with intrinsic-law codes only:
-/// discrete_law never applies it.
+/// the models never apply it.
 TractionLawPtr with_elastic_rise(const TractionLaw& law, double delta_e, const std::string& key);
 
 } // namespace fiberbridge::law

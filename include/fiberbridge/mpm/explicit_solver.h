@@ -8,6 +8,7 @@
 #include "fiberbridge/mpm/grid.h"
 #include "fiberbridge/mpm/orthotropic_elastic.h"
 #include "fiberbridge/mpm/particles.h"
+#include "fiberbridge/mpm/thread_tuner.h"
 #include "fiberbridge/mpm/work_team.h"
 
 namespace fiberbridge {
@@ -197,10 +198,8 @@ private:
   std::vector<double> chunk_sums_; ///< energy terms per particle chunk (summed in chunk order)
   long parallel_steps_ = 0;
   double phase_seconds_[3] = {0, 0, 0};
-  /// Probe (step()): every probe_period steps, probe_steps steps without and probe_steps with
-  /// the helper threads, each step's wall time kept [s].
-  static constexpr long probe_period = 1000, probe_steps = 20;
-  double probe_seconds_[2][probe_steps] = {};
+  /// Whether the helper threads run a step (step(); thread_tuner.h).
+  ThreadTuner tuner_;
   /// Node columns and rows the particles reached in the last scatter ([lo, hi), empty at first):
   /// every node outside holds an empty field, so the grid loops run over this box only.
   int box_i_[2] = {0, 0}, box_j_[2] = {0, 0};

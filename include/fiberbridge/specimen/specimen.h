@@ -2,6 +2,11 @@
 // The DCB specimen and its orthotropic material as plain structs shared by fem, mpm and beam.
 // Defaults: the seed's specimen (section 2.2) and coast Douglas-fir at 12 % MC (USDA Wood Handbook,
 // Ch. 5: E_L = 13.4 GPa, E_T/E_L = 0.050, G_LT/E_L = 0.078, nu_LT = 0.449).
+//
+// One specimen type for the simulations and for the reduction of test records (it replaced
+// analysis::TestSpecimen, issue 30): a record's geometry starts from Specimen::unknown(), every
+// length NaN ("not given"), and is filled from the scene, the command line or a manifest row.
+#include <cmath>
 #include <string>
 
 namespace fiberbridge::specimen {
@@ -11,8 +16,22 @@ struct Specimen {
   double width = 0.035;         ///< B, out of plane [m]
   double height = 0.035;        ///< both arms together, 2h [m]
   double initial_crack = 0.100; ///< a0, measured from the load line [m]
+  /// l1 of ASTM D5528 / ISO 15024: load-pin axis to the arm's mid-plane [m]; NaN: h/2 (a hinge
+  /// on the arm's surface). Used by the reduction of test records (large_displacement.h).
+  double pin_to_arm_midplane = NAN;
+  /// l2 of ASTM D5528 / ISO 15024: load-pin axis to the end block's inner edge [m]; NaN: no end
+  /// blocks (hinges): l2 = 0 in N.
+  double pin_to_block_edge = NAN;
   double arm_thickness() const { return 0.5 * height; }
   void validate(const std::string& context = "Specimen") const;
+
+  /// A test record's specimen before anything is known: every length NaN. In the reduction a NaN
+  /// initial crack means each record's first crack reading, a NaN length is not used.
+  static Specimen unknown();
+  /// The checks of a test record's geometry (analysis::reduce_record): throws InputError naming
+  /// `where` when the width or the arm thickness is missing or not positive, or a given length,
+  /// initial crack or pin distance is not positive.
+  void check_test_geometry(const std::string& where) const;
 };
 
 struct Material {
