@@ -80,21 +80,7 @@ std::string read_record(const std::string& path, const char* magic, std::uint32_
   std::string payload;
   in.get(payload);
   in.expect_end();
-  std::map<std::string, std::string> kept(saved.begin(), saved.end());
-  const std::string afresh = "; run without --resume to start afresh";
-  for (const auto& [key, value] : inputs) {
-    const auto it = kept.find(key);
-    if (it == kept.end())
-      throw InputError(path + ": the scene changed since this work was done: " + key + " is new" +
-                       afresh);
-    if (it->second != value)
-      throw InputError(path + ": the scene changed since this work was done: " + key + " was '" +
-                       it->second + "', now '" + value + "'" + afresh);
-    kept.erase(it);
-  }
-  if (!kept.empty())
-    throw InputError(path + ": the scene changed since this work was done: " + kept.begin()->first +
-                     " is gone" + afresh);
+  check_same_inputs(path, saved, inputs);
   return payload;
 }
 

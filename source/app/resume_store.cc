@@ -124,6 +124,25 @@ std::string resume_directory(const std::string& output_dir) {
   return output_dir + "/resume";
 }
 
+void check_same_inputs(const std::string& path, const Fingerprint& saved,
+                       const Fingerprint& inputs) {
+  const std::string afresh = "; run without --resume to start afresh";
+  std::map<std::string, std::string> kept(saved.begin(), saved.end());
+  for (const auto& [key, value] : inputs) {
+    const auto it = kept.find(key);
+    if (it == kept.end())
+      throw InputError(path + ": the scene changed since this work was done: " + key + " is new" +
+                       afresh);
+    if (it->second != value)
+      throw InputError(path + ": the scene changed since this work was done: " + key + " was '" +
+                       it->second + "', now '" + value + "'" + afresh);
+    kept.erase(it);
+  }
+  if (!kept.empty())
+    throw InputError(path + ": the scene changed since this work was done: " + kept.begin()->first +
+                     " is gone" + afresh);
+}
+
 std::optional<BinaryReader> open_finished_unit(const std::string& output_dir, bool resume,
                                                const std::string& unit, const Fingerprint& inputs) {
   if (!resume)
@@ -148,22 +167,7 @@ std::optional<BinaryReader> open_finished_unit(const std::string& output_dir, bo
   }
   if (const auto saved_unit = in->get<std::string>(); saved_unit != unit)
     throw InputError(path + ": a record of '" + saved_unit + "', not of '" + unit + "'" + afresh);
-  std::map<std::string, std::string> saved;
-  for (auto& [key, value] : in->get<Fingerprint>())
-    saved[key] = value;
-  for (const auto& [key, value] : inputs) {
-    const auto it = saved.find(key);
-    if (it == saved.end())
-      throw InputError(path + ": the scene changed since this work was done: " + key + " is new" +
-                       afresh);
-    if (it->second != value)
-      throw InputError(path + ": the scene changed since this work was done: " + key + " was '" +
-                       it->second + "', now '" + value + "'" + afresh);
-    saved.erase(it);
-  }
-  if (!saved.empty())
-    throw InputError(path + ": the scene changed since this work was done: " +
-                     saved.begin()->first + " is gone" + afresh);
+  check_same_inputs(path, in->get<Fingerprint>(), inputs);
   return in;
 }
 

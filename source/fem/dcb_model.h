@@ -35,7 +35,7 @@
 #include <utility>
 #include <vector>
 
-namespace fiberbridge::fem::distributed {
+namespace fiberbridge::fem {
 
 template <int dim>
 class DcbModel : private EquilibriumProblem, private JacobianSystem {
@@ -218,4 +218,4 @@ private:
   std::unique_ptr<VirtualTestRecorder<dim>> virtual_test_;
 };
 
-} // namespace fiberbridge::fem::distributed
+} // namespace fiberbridge::fem

@@ -12,14 +12,12 @@
 
 namespace fiberbridge::fem {
 
-namespace distributed {
 template <int dim>
-result::SimulationResult run_distributed(const specimen::Specimen&, const specimen::Material&,
-                                         const law::TractionLaw&, double, const FemParameters&,
-                                         const std::string&,
-                                         const std::function<void(const std::string&)>&, MPI_Comm,
-                                         DistributedRunInfo&, FemRunDetails&);
-} // namespace distributed
+result::SimulationResult run_dcb_model(const specimen::Specimen&, const specimen::Material&,
+                                       const law::TractionLaw&, double, const FemParameters&,
+                                       const std::string&,
+                                       const std::function<void(const std::string&)>&, MPI_Comm,
+                                       DistributedRunInfo&, FemRunDetails&);
 
 result::SimulationResult
 simulate_dcb(const specimen::Specimen& specimen, const specimen::Material& material,
@@ -37,11 +35,11 @@ simulate_dcb(const specimen::Specimen& specimen, const specimen::Material& mater
   const FemParameters resolved = with_mesh(parameters, mesh);
   result::SimulationResult r;
   if (parameters.mesh.dimension == 3)
-    r = distributed::run_distributed<3>(specimen, material, law, j_tip, resolved, output_dir,
-                                        progress, comm, i, d);
+    r = run_dcb_model<3>(specimen, material, law, j_tip, resolved, output_dir, progress, comm, i,
+                         d);
   else if (parameters.mesh.dimension == 2)
-    r = distributed::run_distributed<2>(specimen, material, law, j_tip, resolved, output_dir,
-                                        progress, comm, i, d);
+    r = run_dcb_model<2>(specimen, material, law, j_tip, resolved, output_dir, progress, comm, i,
+                         d);
   else
     throw InputError("FEM/Dimension: must be 2 or 3");
   i.mesh = mesh;

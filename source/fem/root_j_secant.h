@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace fiberbridge::fem::distributed {
+namespace fiberbridge::fem {
 
 class RootJSecant {
 public:
@@ -53,4 +53,4 @@ private:
   bool bracketed_ = false;
 };
 
-} // namespace fiberbridge::fem::distributed
+} // namespace fiberbridge::fem

@@ -37,6 +37,11 @@ std::string resume_directory(const std::string& output_dir);
 /// read up to its payload. Throws InputError naming the record and the first input that differs
 /// from `inputs`, or the record when it cannot be read (damaged, of another kind, or written by
 /// another version of fiberbridge: a record of before issue 30 is a CBOR file <unit>.cbor).
+/// Throws InputError naming `path` and the first input that differs between a record's `saved`
+/// inputs and this run's `inputs` (new, changed or gone), with the advice to start afresh.
+void check_same_inputs(const std::string& path, const Fingerprint& saved,
+                       const Fingerprint& inputs);
+
 std::optional<BinaryReader> open_finished_unit(const std::string& output_dir, bool resume,
                                                const std::string& unit, const Fingerprint& inputs);
 
