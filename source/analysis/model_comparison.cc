@@ -148,7 +148,13 @@ std::vector<ClosedLoopRow> closed_loop(const result::SimulationResult& r,
       row.model = r.model;
       row.r_source = source;
       row.method = method;
-      const auto it = std::max_element(s.begin(), s.end());
+      // The first point of the peak: a recovered law can have a flat top (dR/ddelta of a
+      // smoothed curve, equal to 10 digits over several points), where max_element's choice
+      // would follow the round-off of the run (a condensed FEM against a full one moved it by
+      // a factor 2 in delta). Points within 1e-9 of the maximum count as the peak.
+      const double top = *std::max_element(s.begin(), s.end());
+      const auto it = std::find_if(s.begin(), s.end(),
+                                   [top](double v) { return v >= top - 1e-9 * std::abs(top); });
       row.peak_kPa = *it / units::kPa;
       row.delta_at_peak_mm = laws.delta[static_cast<std::size_t>(it - s.begin())] / units::mm;
       row.peak_true_kPa = true_peak / units::kPa;
