@@ -197,21 +197,23 @@ void FemParameters::Nonlinear::validate() const {
 }
 
 void FemParameters::Linear::declare_parameters(dealii::ParameterHandler& prm) {
-  prm.declare_entry("Linear solver", "auto",
-                    dealii::Patterns::Selection("auto|klu|umfpack|mumps|cg_amg|condensed"),
-                    "Solver of the Jacobian systems: condensed (the linear elastic arms condensed "
-                    "onto the crack plane once per mesh, a dense inverse of the crack-plane system "
-                    "updated at each release and tangent change; the same systems as klu, several "
-                    "times faster; 2D, one MPI rank, Kinematics = small only, else an input "
-                    "error); auto (condensed where it applies, else klu); klu (Trilinos Amesos "
-                    "KLU; on several ranks "
-                    "the matrix is gathered on one), mumps (Trilinos Amesos MUMPS, distributed "
-                    "direct; the choice for MPI runs), both with a low-rank (Woodbury) update "
-                    "between factorizations; or cg_amg (CG with Trilinos ML AMG: the Jacobian is "
-                    "made SPD by using the secant instead of the negative softening tangent, so "
-                    "Newton becomes a quasi-Newton with the same residual test; for meshes too "
-                    "large for a direct solver). umfpack: deprecated, runs klu (the one engine "
-                    "has no serial-only solver).");
+  prm.declare_entry(
+      "Linear solver", "auto",
+      dealii::Patterns::Selection("auto|klu|umfpack|mumps|cg_amg|condensed"),
+      "Solver of the Jacobian systems: condensed (the linear elastic arms condensed "
+      "onto the crack plane once per mesh, a dense inverse of the crack-plane system "
+      "updated at each release and tangent change; the same systems as klu, about twice as "
+      "fast on the seed mesh; 2D, one MPI rank, Kinematics = small only, else an input "
+      "error); auto (condensed where it applies and the "
+      "crack plane has at most 1000 dofs, else klu); klu (Trilinos Amesos "
+      "KLU; on several ranks "
+      "the matrix is gathered on one), mumps (Trilinos Amesos MUMPS, distributed "
+      "direct; the choice for MPI runs), both with a low-rank (Woodbury) update "
+      "between factorizations; or cg_amg (CG with Trilinos ML AMG: the Jacobian is "
+      "made SPD by using the secant instead of the negative softening tangent, so "
+      "Newton becomes a quasi-Newton with the same residual test; for meshes too "
+      "large for a direct solver). umfpack: deprecated, runs klu (the one engine "
+      "has no serial-only solver).");
   prm.declare_entry("Linear tolerance", "1e-10", Double(0, 1),
                     "cg_amg only: CG stops at this residual relative to the right-hand side.");
   prm.declare_entry("Engine", "auto", dealii::Patterns::Selection("auto|serial|distributed"),
