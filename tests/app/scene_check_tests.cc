@@ -150,8 +150,10 @@ TEST(SceneCheck, RenamedKeyGivenTwiceFailsBeforeTheFirstItem) {
 }
 
 TEST(SceneCheck, BadIdentifyForwardModelFailsBeforeTheFirstItem) {
-#ifndef FIBERBRIDGE_HAVE_BEAM
-  GTEST_SKIP() << "beam module not built (identify needs it)";
+#if !defined(FIBERBRIDGE_HAVE_BEAM) || !defined(FIBERBRIDGE_HAVE_FEM)
+  // identify needs the beam; prm/test_records.prm has a FEM section, which a build without the
+  // FEM refuses as an unknown subsection before any key is checked.
+  GTEST_SKIP() << "beam or FEM module not built (FIBERBRIDGE_MODELS)";
 #endif
   // Identify/Forward model takes the models that offer identify a forward run (beam, fem): a
   // typo names the key before reduce (the first item) runs. The MPM is a model but not offered.
