@@ -171,10 +171,14 @@ bool is_units_row(const std::vector<std::string>& cells) {
   return units > 0;
 }
 
-/// The decimal separator of a file whose delimiter is not a comma: a comma when numbers are
-/// written "0,5" and none "0.5", or when a "1.234,5" grouping shows up (and no "1,234.5").
+/// The decimal separator of a file whose delimiter is not a comma: a comma when a "1.234,5"
+/// grouping shows up (and no "1,234.5"), a point for the reverse; otherwise the separator written
+/// between digits more often ("0,5" against "0.5"). Counted rather than merely seen: a preamble's
+/// date ("Datum: 05.12.2026") or version number above thousands of "0,5" readings must not make
+/// the file a decimal-point one (whose data rows then hold no number).
 char detect_decimal(const std::string& text) {
-  bool comma = false, dot = false, euro = false, english = false;
+  std::size_t comma = 0, dot = 0;
+  bool euro = false, english = false;
   const auto digit = [&](std::size_t k) {
     return k < text.size() && std::isdigit(static_cast<unsigned char>(text[k]));
   };
@@ -182,7 +186,7 @@ char detect_decimal(const std::string& text) {
     const char c = text[k];
     if ((c != ',' && c != '.') || !digit(k - 1) || !digit(k + 1))
       continue;
-    (c == ',' ? comma : dot) = true;
+    ++(c == ',' ? comma : dot);
     // A group of three digits then the other separator: "1.234,5" or "1,234.5".
     if (digit(k + 2) && digit(k + 3) && k + 4 < text.size() && digit(k + 5)) {
       if (c == '.' && text[k + 4] == ',')
@@ -191,7 +195,9 @@ char detect_decimal(const std::string& text) {
         english = true;
     }
   }
-  return comma && (!dot || (euro && !english)) ? ',' : '.';
+  if (euro != english)
+    return euro ? ',' : '.';
+  return comma > dot ? ',' : '.';
 }
 
 /// In a blank-separated header, "Load (kN)" is two tokens: a bracketed token joins the one

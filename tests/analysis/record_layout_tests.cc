@@ -229,6 +229,11 @@ TEST(RecordLayouts, DetectionNamesWhatItFound) {
   EXPECT_EQ(mt.layout().repeated_headers, 2u) << "the header and units row of the second buffer";
   EXPECT_EQ(mt.header()[1], "Crosshead");
   EXPECT_EQ(mt.units()[1], "m");
+  // A preamble's date with points above decimal-comma readings: the readings decide.
+  const TableLayout dated = layout_of("Datum: 05.12.2026\nZeit;Weg;Kraft\n1,0;0,5;10,2\n"
+                                      "2,0;1,0;20,4\n3,0;1,5;30,6\n");
+  EXPECT_EQ(dated.decimal, ',') << dated.describe();
+  EXPECT_EQ(dated.header_line, 2u) << dated.describe();
   const TableLayout p = layout_of("time_s,opening_mm,load_N,a_mm\n0,0,0,30\n1,0.5,10,30\n");
   EXPECT_FALSE(p.is_export()) << p.describe();
   EXPECT_EQ(p.header_line, 1u);
