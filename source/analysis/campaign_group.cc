@@ -2,6 +2,7 @@
 // bootstrap over whole specimens that gives its intervals (campaign.h; docs/design.md section 1,
 // "Durability campaign").
 #include "fiberbridge/analysis/campaign.h"
+#include "fiberbridge/analysis/campaign_statistics.h"
 #include "fiberbridge/analysis/line_fit.h"
 #include "fiberbridge/analysis/trilinear_fit.h"
 #include "fiberbridge/core/error.h"
@@ -58,18 +59,6 @@ double law_at(const std::vector<double>& x, const std::vector<double>& y, double
   return interpolate_linear(x, y, t);
 }
 
-/// The q-quantile of the finite values (linear between order statistics, "type 7").
-double quantile(std::vector<double> v, double q) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty())
-    return NAN;
-  std::sort(v.begin(), v.end());
-  const double h = q * (v.size() - 1);
-  const std::size_t lo = static_cast<std::size_t>(std::floor(h));
-  const std::size_t hi = std::min(lo + 1, v.size() - 1);
-  return v[lo] + (h - lo) * (v[hi] - v[lo]);
-}
-
 /// sqrt(n/(n-1)) t_{n-1, 1-(1-level)/2}: the small-sample factor of both corrected intervals
 /// (the bootstrap's variance of a mean of n is (n-1)/n of the sample's, and its tails are
 /// Student's, not normal).
@@ -94,7 +83,7 @@ Interval make_interval(const CampaignOptions& o, std::size_t n, double v,
                        const std::vector<double>& samples) {
   if (o.interval != CampaignOptions::Interval::student_t) {
     const double a = bootstrap_tail(o, n);
-    return {quantile(samples, a), quantile(samples, 1 - a)};
+    return {sample_quantile(samples, a), sample_quantile(samples, 1 - a)};
   }
   double s = 0, ss = 0;
   int m = 0;
@@ -112,7 +101,7 @@ Interval make_interval(const CampaignOptions& o, std::size_t n, double v,
 }
 
 double median(std::vector<double> v) {
-  return quantile(std::move(v), 0.5);
+  return sample_quantile(std::move(v), 0.5);
 }
 
 } // namespace

@@ -10,6 +10,17 @@
 
 namespace fiberbridge::analysis {
 
+double sample_quantile(std::vector<double> v, double q) {
+  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
+  if (v.empty())
+    return NAN;
+  std::sort(v.begin(), v.end());
+  const double h = q * (v.size() - 1);
+  const std::size_t lo = static_cast<std::size_t>(std::floor(h));
+  const std::size_t hi = std::min(lo + 1, v.size() - 1);
+  return v[lo] + (h - lo) * (v[hi] - v[lo]);
+}
+
 namespace {
 
 GroupQuantity quantity_of_property(const std::string& p) {
@@ -52,17 +63,6 @@ int n_cycle_counts(const std::vector<CampaignGroup>& groups, const std::string& 
     if (g.material == material)
       c.insert(g.cycles);
   return static_cast<int>(c.size());
-}
-
-double quantile(std::vector<double> v, double q) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty())
-    return NAN;
-  std::sort(v.begin(), v.end());
-  const double h = q * (v.size() - 1);
-  const std::size_t lo = static_cast<std::size_t>(std::floor(h));
-  const std::size_t hi = std::min(lo + 1, v.size() - 1);
-  return v[lo] + (h - lo) * (v[hi] - v[lo]);
 }
 
 int n_samples(const std::vector<CampaignGroup>& groups) {
@@ -171,7 +171,7 @@ std::vector<CampaignDegradation> campaign_degradation(const std::vector<Campaign
       d.note = "no bootstrap (groups of one specimen or bootstrap off): no interval";
     } else {
       const double alpha = 0.5 * (1 - confidence);
-      d.slope_ci = {quantile(s, alpha), quantile(s, 1 - alpha)};
+      d.slope_ci = {sample_quantile(s, alpha), sample_quantile(s, 1 - alpha)};
       // Two-sided bootstrap p of "no trend": twice the smaller tail beyond 0, at least
       // 1/(samples + 1) (the resolution of the bootstrap).
       double below = 0, above = 0;

@@ -10,6 +10,10 @@
 
 namespace fiberbridge::analysis {
 
+/// The q-quantile of the finite values of v (linear between order statistics, "type 7"); NaN
+/// when none is finite. The campaign's bootstrap intervals and degradation slopes use it.
+double sample_quantile(std::vector<double> v, double q);
+
 /// The Table 1 properties a campaign regresses, as named in data/reference/seed_table1.csv:
 /// sigma1 [kPa], J1 [J/m^2], sigma2 [kPa], J2 [J/m^2], lb [mm].
 const std::vector<std::string>& campaign_table_properties();
