@@ -15,6 +15,13 @@
 #include <numeric>
 #include <string>
 
+// LAPACK's condition estimate of an LU factorization (deal.II 9.4's lapack_templates.h does
+// not wrap it).
+extern "C" void dgecon_(const char* norm, const dealii::types::blas_int* n, const double* a,
+                        const dealii::types::blas_int* lda, const double* anorm, double* rcond,
+                        double* work, dealii::types::blas_int* iwork,
+                        dealii::types::blas_int* info);
+
 namespace fiberbridge::fem {
 
 using namespace dealii;
@@ -83,10 +90,19 @@ public:
   void solve(double* x, unsigned from, unsigned to) const {
     for (unsigned i = from; i < to; ++i) {
       const double* li = row(i);
-      double s = x[i];
-      for (unsigned k = std::max(first_[i], from); k < i; ++k)
-        s -= li[k] * x[k];
-      x[i] = s / li[i];
+      // Four partial sums: a single one is a chain of dependent additions that does not
+      // vectorize (the forward half took twice the backward axpy half).
+      double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+      unsigned k = std::max(first_[i], from);
+      for (; k + 4 <= i; k += 4) {
+        s0 += li[k] * x[k];
+        s1 += li[k + 1] * x[k + 1];
+        s2 += li[k + 2] * x[k + 2];
+        s3 += li[k + 3] * x[k + 3];
+      }
+      for (; k < i; ++k)
+        s0 += li[k] * x[k];
+      x[i] = (x[i] - ((s0 + s1) + (s2 + s3))) / li[i];
     }
     const unsigned bottom = from < n_ ? block_start_[from] : n_;
     for (unsigned i = to; i-- > bottom;) {
@@ -121,6 +137,7 @@ public:
 
   void update(const std::vector<double>& tangents, unsigned epoch) override {
     const TimerOutput::Scope timed(timer_, "factorize");
+    current_ = tangents;
     if (!built_) {
       built_ = true;
       read_constraints();
@@ -141,12 +158,10 @@ public:
         if (!zero_[k] && before[k])
           added.push_back(k);
       }
-      low_rank(tangents);
       if (!added.empty())
-        border(added);
-      return;
+        border(added); // with the tangents G holds; the changed ones stay pending
     }
-    low_rank(tangents);
+    prepare_pending();
   }
 
   void solve(const Vec& rhs, Vec& x) override {
@@ -198,6 +213,15 @@ private:
   /// ... and after refinement, above which the inverse is formed again: far below what Newton
   /// notices (a step exact to 1e-9 relative converges as the exact one), far above round-off.
   static constexpr double kMaxDrift = 1e-9;
+  /// Pending tangent changes (jumps) past which they are folded into G: a solve's Woodbury part
+  /// costs O(f k + k^3), a fold O(k f^2); with f of a few hundred, a few dozen pending jumps
+  /// cost less than a tenth of the solve's G r.
+  static constexpr std::size_t kMaxPending = 48;
+  /// Releases between two residual checks of G (see border()).
+  static constexpr unsigned kCheckEvery = 8;
+  /// Condition (1-norm, LAPACK's estimate) of the capacitance I + G_EE D above which each solve is
+  /// checked: its round-off then reaches 1e-16 x 1e6 = 1e-10, the refinement threshold kRefine.
+  static constexpr double kMaxCapacitanceCondition = 1e6;
 
   /// Once per mesh (inside the model's "setup" section): K_II factorized, S formed.
   void setup() {
@@ -340,6 +364,7 @@ private:
 
   /// Forms G = (S'_FF + T_FF)^-1 from scratch: O(f^3), once per run unless round-off drift.
   void rebuild(const std::vector<double>& tangents) {
+    pe_.clear(); // the tangents are all in G
     var_.clear();
     std::fill(pos_.begin(), pos_.end(), -1);
     for (unsigned k = 0; k < m_; ++k)
@@ -379,13 +404,16 @@ private:
       for (unsigned a = 0; a < f_; ++a)
         for (unsigned b = 0; b < f_; ++b)
           g_[std::size_t(a) * m_ + b] = M(a, b);
+      symmetrize();
     }
     applied_ = tangents;
+    g_changed_ = true;
     ++stats_.n_factorizations;
   }
 
-  /// The points whose tangent changed since G was formed enter by the rank-k identity
-  /// (M + E D E^T)^-1 = G - G E D (I + E^T G E D)^-1 E^T G on the free jumps E they touch.
+  /// Folds the pending tangent changes into G by the rank-k identity
+  /// (M + E D E^T)^-1 = G - G E Q E^T G, Q = D (I + E^T G E D)^-1 (symmetric), on the free
+  /// jumps E they touch. O(k f^2): only where too many changes are pending (prepare_pending()).
   void low_rank(const std::vector<double>& tangents) {
     std::vector<unsigned> e; // positions in G
     std::vector<int> local(f_, -1);
@@ -420,48 +448,82 @@ private:
       }
     A.gauss_jordan();
     D.mmult(Q, A);
-    // U = G_{:,E} (columns, as rows by symmetry), V = U Q; G -= V U^T.
-    std::vector<std::vector<double>> U(k, std::vector<double>(f_)), V(k, std::vector<double>(f_));
-    for (unsigned a = 0; a < k; ++a)
-      for (unsigned i = 0; i < f_; ++i)
-        U[a][i] = g(e[a], i);
-    for (unsigned b = 0; b < k; ++b)
-      for (unsigned i = 0; i < f_; ++i) {
-        double s = 0;
-        for (unsigned a = 0; a < k; ++a)
-          s += U[a][i] * Q(a, b);
-        V[b][i] = s;
-      }
-    for (unsigned i = 0; i < f_; ++i) {
-      double* gi = g_.data() + std::size_t(i) * m_;
-      for (unsigned b = 0; b < k; ++b) {
-        const double vib = V[b][i];
-        const double* ub = U[b].data();
-        for (unsigned j = 0; j < f_; ++j)
-          gi[j] -= vib * ub[j];
-      }
+    // U = G_{:,E} (rows, by symmetry): G -= U Q U^T.
+    std::vector<std::vector<double>> copies(k);
+    std::vector<const double*> rows(k);
+    for (unsigned a = 0; a < k; ++a) {
+      const double* row = g_.data() + std::size_t(e[a]) * m_;
+      copies[a].assign(row, row + f_);
+      rows[a] = copies[a].data();
     }
-    symmetrize();
-    ++stats_.n_low_rank;
+    symmetric_update(rows, Q, -1.0);
+    g_changed_ = true;
+    ++stats_.n_folds;
   }
 
-  /// G is symmetric (M is); the updates use rows for columns, so round-off asymmetry would feed
-  /// back into every later update: average it out.
+  /// G += sign U C U^T for a symmetric k x k C and U with the columns `columns` (each f long;
+  /// they may be rows of G itself: copied first). Done as sum_l lambda_l h_l h_l^T over the
+  /// eigenpairs of C, h_l = U v_l, each entry summed over l in the same order from the product
+  /// h_l[i] h_l[j]: G stays exactly symmetric (the solves read rows for columns), so no pass
+  /// that averages the two halves is needed, and the whole update is one pass over G.
+  void symmetric_update(const std::vector<const double*>& columns, const FullMatrix<double>& C,
+                        double sign) {
+    const unsigned k = columns.size();
+    std::vector<double> sym(std::size_t(k) * k);
+    for (unsigned a = 0; a < k; ++a)
+      for (unsigned b = 0; b < k; ++b)
+        sym[std::size_t(b) * k + a] = 0.5 * (C(a, b) + C(b, a));
+    const types::blas_int n = k;
+    types::blas_int info = 0, lwork = -1;
+    std::vector<double> lambda(k);
+    double query = 0;
+    syev("V", "U", &n, sym.data(), &n, lambda.data(), &query, &lwork, &info);
+    lwork = types::blas_int(query);
+    std::vector<double> work(std::max<types::blas_int>(lwork, 1));
+    syev("V", "U", &n, sym.data(), &n, lambda.data(), work.data(), &lwork, &info);
+    if (info != 0)
+      throw ComputationError("FEM/Linear solver = condensed: no eigen-decomposition of a "
+                             "low-rank update (LAPACK dsyev info " +
+                             std::to_string(info) + ")");
+    std::vector<std::vector<double>> h(k, std::vector<double>(f_, 0.0));
+    for (unsigned l = 0; l < k; ++l) {
+      lambda[l] *= sign;
+      for (unsigned a = 0; a < k; ++a) {
+        const double w = sym[std::size_t(l) * k + a];
+        const double* col = columns[a];
+        double* hl = h[l].data();
+        for (unsigned i = 0; i < f_; ++i)
+          hl[i] += col[i] * w;
+      }
+    }
+    std::vector<double> t(f_);
+    for (unsigned i = 0; i < f_; ++i) {
+      std::fill(t.begin(), t.end(), 0.0);
+      for (unsigned l = 0; l < k; ++l) {
+        const double hi = h[l][i], lam = lambda[l];
+        const double* hl = h[l].data();
+        for (unsigned j = 0; j < f_; ++j)
+          t[j] += (hi * hl[j]) * lam;
+      }
+      double* gi = g_.data() + std::size_t(i) * m_;
+      for (unsigned j = 0; j < f_; ++j)
+        gi[j] += t[j];
+    }
+  }
+
+  /// Makes G exactly symmetric (after a Gauss-Jordan inverse, whose halves differ by round-off).
   void symmetrize() {
-    constexpr unsigned tile = 32; // in tiles: the column walk stays in cache
-    for (unsigned i0 = 0; i0 < f_; i0 += tile)
-      for (unsigned j0 = 0; j0 <= i0; j0 += tile)
-        for (unsigned i = i0; i < std::min(f_, i0 + tile); ++i)
-          for (unsigned j = j0; j < std::min(i, j0 + tile); ++j) {
-            double& a = g_[std::size_t(i) * m_ + j];
-            double& b = g_[std::size_t(j) * m_ + i];
-            a = b = 0.5 * (a + b);
-          }
+    for (unsigned i = 0; i < f_; ++i)
+      for (unsigned j = 0; j < i; ++j) {
+        double& a = g_[std::size_t(i) * m_ + j];
+        double& b = g_[std::size_t(j) * m_ + i];
+        a = b = 0.5 * (a + b);
+      }
   }
 
   /// A release frees the released pairs' jumps: the new unknowns N border the system,
   /// [[M, b], [b^T, c]]^-1 = [[G + g s^-1 g^T, -g s^-1], [-s^-1 g^T, s^-1]], g = G b,
-  /// s = c - b^T g. O(f^2 q) instead of O(f^3).
+  /// s = c - b^T g. O(f^2 q) instead of O(f^3), in two passes over G (g, then the update).
   void border(const std::vector<unsigned>& added) {
     const unsigned q = added.size();
     std::vector<int> nloc(m_, -1);
@@ -492,9 +554,19 @@ private:
         }
       }
     }
+    // g = G b, all q columns in one pass over G.
     std::vector<std::vector<double>> gb(q, std::vector<double>(f_, 0.0));
-    for (unsigned l = 0; l < q; ++l)
-      symmetric_multiply(g_, b[l], gb[l]);
+    for (unsigned r = 0; r < f_; ++r) {
+      const double* gr = g_.data() + std::size_t(r) * m_;
+      for (unsigned l = 0; l < q; ++l) {
+        const double x = b[l][r];
+        if (x == 0)
+          continue;
+        double* out = gb[l].data();
+        for (unsigned a = 0; a < f_; ++a)
+          out[a] += x * gr[a];
+      }
+    }
     FullMatrix<double> s(q, q);
     for (unsigned l1 = 0; l1 < q; ++l1)
       for (unsigned l2 = 0; l2 < q; ++l2) {
@@ -504,21 +576,19 @@ private:
         s(l1, l2) = v;
       }
     s.gauss_jordan();
-    // gs = g s^-1 (columns), then the blocks.
+    for (unsigned l1 = 0; l1 < q; ++l1) // s^-1 symmetric (s is): exactly so
+      for (unsigned l2 = 0; l2 < l1; ++l2)
+        s(l1, l2) = s(l2, l1) = 0.5 * (s(l1, l2) + s(l2, l1));
+    // gs = g s^-1 (columns): the new off-diagonal blocks, computed before G changes.
     std::vector<std::vector<double>> gs(q, std::vector<double>(f_, 0.0));
     for (unsigned l2 = 0; l2 < q; ++l2)
       for (unsigned l1 = 0; l1 < q; ++l1)
         for (unsigned i = 0; i < f_; ++i)
           gs[l2][i] += gb[l1][i] * s(l1, l2);
-    for (unsigned i = 0; i < f_; ++i) {
-      double* gi = g_.data() + std::size_t(i) * m_;
-      for (unsigned l = 0; l < q; ++l) {
-        const double a = gs[l][i];
-        const double* gl = gb[l].data();
-        for (unsigned j = 0; j < f_; ++j)
-          gi[j] += a * gl[j];
-      }
-    }
+    std::vector<const double*> columns(q);
+    for (unsigned l = 0; l < q; ++l)
+      columns[l] = gb[l].data();
+    symmetric_update(columns, s, 1.0);
     for (unsigned l = 0; l < q; ++l) {
       const unsigned a = f_ + l;
       for (unsigned i = 0; i < f_; ++i) {
@@ -531,13 +601,18 @@ private:
       var_.push_back(added[l]);
     }
     f_ += q;
-    symmetrize();
     for (unsigned l = 0; l < q; ++l)
       for (unsigned i = 0; i < f_; ++i) {
         const double v = sp_[std::size_t(var_[i]) * m_ + added[l]];
         mf_[std::size_t(i) * m_ + pos_[added[l]]] = v;
         mf_[std::size_t(pos_[added[l]]) * m_ + i] = v;
       }
+    // The residual check after every kCheckEvery-th release (and every rebuild and fold): a
+    // bordering is exact up to round-off of O(f) terms, and the check costs a pass over S'.
+    if (++borders_since_check_ >= kCheckEvery) {
+      borders_since_check_ = 0;
+      g_changed_ = true;
+    }
     ++stats_.n_bordered;
   }
 
@@ -548,6 +623,11 @@ private:
   /// measured, so no solve returns a step less exact than kMaxDrift; past it G is formed again.
   void dense_solve() {
     multiply_inverse(rv_, vf_);
+    // The residual check after each change of G (rebuild, release, fold): G is only ever
+    // changed by those, so the solves in between are as exact as the one checked.
+    if (!g_changed_ && !check_each_solve_)
+      return;
+    g_changed_ = false;
     double d = drift(vf_);
     if (d > kRefine) {
       for (unsigned a = 0; a < f_; ++a)
@@ -559,16 +639,115 @@ private:
       d = drift(vf_);
     }
     if (d > kMaxDrift) {
-      rebuild(applied_);
+      rebuild(current_);
+      pe_.clear();
+      g_changed_ = false;
       ++stats_.n_drift_refreshes;
       multiply_inverse(rv_, vf_);
     }
   }
 
-  /// v = G r as a sum of rows (G is symmetric): axpy loops vectorize, dot products (a chain of
-  /// dependent additions) do not.
-  void multiply_inverse(const std::vector<double>& r, std::vector<double>& v) const {
+  /// v = M^-1 r with M = S'_FF + the current tangents: G r (a sum of rows, G is symmetric:
+  /// axpy loops vectorize, dot products do not), then the pending tangent changes by the
+  /// Woodbury identity M^-1 r = y - G E D (I + G_EE D)^-1 y_E, y = G r.
+  void multiply_inverse(const std::vector<double>& r, std::vector<double>& v) {
     symmetric_multiply(g_, r, v);
+    const unsigned k = pe_.size();
+    if (k == 0)
+      return;
+    for (unsigned a = 0; a < k; ++a)
+      pz_[a] = v[pe_[a]];
+    const types::blas_int n = k, one = 1;
+    types::blas_int info = 0;
+    getrs("N", &n, &one, pa_.data(), &n, pipiv_.data(), pz_.data(), &n, &info); // A^-1 y_E
+    std::fill(pc_.begin(), pc_.end(), 0.0);
+    for (unsigned b = 0; b < k; ++b)
+      for (const auto& [a, d] : pd_[b]) // D z, column b
+        pc_[a] += d * pz_[b];
+    for (unsigned a = 0; a < k; ++a) {
+      const double za = pc_[a];
+      if (za == 0)
+        continue;
+      const double* ga = g_.data() + std::size_t(pe_[a]) * m_; // row = column (symmetric)
+      double* out = v.data();
+      for (unsigned i = 0; i < f_; ++i)
+        out[i] -= za * ga[i];
+    }
+  }
+
+  /// The points whose tangent differs from the one G holds, on the free jumps E they touch:
+  /// D = sum (t - t_G) n n^T and the capacitance (I + G_EE D)^-1 for the solves. A tangent change
+  /// thus costs O(f k) per solve instead of an O(k f^2) update of G; past kMaxPending jumps (the
+  /// zone has grown or moved) the changes are folded into G (low_rank()), which then starts a
+  /// fresh pending set.
+  void prepare_pending() {
+    pe_.clear();
+    std::vector<int> local(f_, -1);
+    std::vector<std::pair<unsigned, double>> changed;
+    for (unsigned p = 0; p < point_vars_.size(); ++p)
+      if (current_[p] != applied_[p]) {
+        bool touches = false;
+        for (const auto& [i, ni] : point_vars_[p])
+          if (pos_[i] >= 0) {
+            touches = true;
+            if (local[pos_[i]] < 0) {
+              local[pos_[i]] = int(pe_.size());
+              pe_.push_back(pos_[i]);
+            }
+          }
+        if (touches)
+          changed.emplace_back(p, current_[p] - applied_[p]);
+      }
+    if (pe_.size() > kMaxPending) {
+      pe_.clear();
+      low_rank(current_);
+      return;
+    }
+    const unsigned k = pe_.size();
+    pz_.assign(k, 0.0);
+    pc_.assign(k, 0.0);
+    if (k == 0)
+      return;
+    // D by columns (each point couples the two or three jumps of its element: D is sparse).
+    std::vector<double> dense(std::size_t(k) * k, 0.0);
+    for (const auto& [p, dk] : changed)
+      for (const auto& [i, ni] : point_vars_[p])
+        for (const auto& [j, nj] : point_vars_[p])
+          if (pos_[i] >= 0 && pos_[j] >= 0)
+            dense[std::size_t(local[pos_[j]]) * k + local[pos_[i]]] += dk * ni * nj;
+    pd_.assign(k, {});
+    for (unsigned b = 0; b < k; ++b)
+      for (unsigned c = 0; c < k; ++c)
+        if (dense[std::size_t(b) * k + c] != 0)
+          pd_[b].emplace_back(c, dense[std::size_t(b) * k + c]);
+    // A = I + G_EE D, column-major for LAPACK: LU once per linearization, a solve per solve.
+    pa_.assign(std::size_t(k) * k, 0.0);
+    for (unsigned b = 0; b < k; ++b) {
+      double* col = pa_.data() + std::size_t(b) * k;
+      col[b] = 1.0;
+      for (const auto& [c, d] : pd_[b])
+        for (unsigned a = 0; a < k; ++a)
+          col[a] += g(pe_[a], pe_[c]) * d;
+    }
+    const types::blas_int n = k;
+    types::blas_int info = 0;
+    std::vector<double> work(4 * std::size_t(k));
+    const double norm_a = lange("1", &n, &n, pa_.data(), &n, work.data());
+    pipiv_.assign(k, 0);
+    getrf(&n, &n, pa_.data(), &n, pipiv_.data(), &info);
+    // An ill-conditioned capacitance (M itself near singular) loses the accuracy the check on
+    // G vouches for: the solves with it are then checked one by one. A singular one (info > 0)
+    // is folded into G instead, where the check and the refresh handle it.
+    if (info != 0) {
+      pe_.clear();
+      low_rank(current_);
+      return;
+    }
+    double rcond = 0;
+    std::vector<types::blas_int> iwork(k);
+    dgecon_("1", &n, pa_.data(), &n, &norm_a, &rcond, work.data(), iwork.data(), &info);
+    check_each_solve_ = !(rcond * kMaxCapacitanceCondition > 1);
+    ++stats_.n_low_rank;
   }
 
   void symmetric_multiply(const std::vector<double>& A, const std::vector<double>& x,
@@ -585,12 +764,12 @@ private:
     }
   }
 
-  /// |M v - r| / |r| for the right-hand side rv_ (M v kept in mv_), M = S'_FF + the applied
+  /// |M v - r| / |r| for the right-hand side rv_ (M v kept in mv_), M = S'_FF + the current
   /// tangents.
   double drift(const std::vector<double>& v) {
     symmetric_multiply(mf_, v, mv_);
     for (unsigned p = 0; p < point_vars_.size(); ++p)
-      if (applied_[p] != 0) {
+      if (current_[p] != 0) {
         double o = 0;
         for (const auto& [i, ni] : point_vars_[p])
           if (pos_[i] >= 0)
@@ -598,7 +777,7 @@ private:
         if (o != 0)
           for (const auto& [i, ni] : point_vars_[p])
             if (pos_[i] >= 0)
-              mv_[pos_[i]] += applied_[p] * ni * o;
+              mv_[pos_[i]] += current_[p] * ni * o;
       }
     double num = 0, den = 0;
     for (unsigned a = 0; a < f_; ++a) {
@@ -623,6 +802,17 @@ private:
   std::vector<unsigned> var_;   ///< unknown at a position of G
   std::vector<double> g_;       ///< the explicit inverse (stride m)
   std::vector<double> applied_; ///< the tangents G includes
+  std::vector<double> current_; ///< the tangents of the last update()
+  /// The pending changes current_ - applied_ (prepare_pending()): the jumps E (positions in
+  /// G), D on them, the inverse capacitance (I + G_EE D)^-1, and y_E of a solve.
+  std::vector<unsigned> pe_;
+  std::vector<std::vector<std::pair<unsigned, double>>> pd_; ///< D by columns
+  std::vector<double> pa_;                                   ///< LU of I + G_EE D
+  std::vector<types::blas_int> pipiv_;
+  std::vector<double> pz_, pc_;
+  bool g_changed_ = true;         ///< G changed since the last checked solve
+  bool check_each_solve_ = false; ///< the capacitance is ill-conditioned
+  unsigned borders_since_check_ = 0;
   bool built_ = false;
   unsigned epoch_ = ~0u;
   std::vector<double> yi_, rb_, ub_, rv_, vf_, mv_, res_, dv_;

@@ -37,7 +37,8 @@ struct JacobianSolverStats {
   unsigned n_linear_solves = 0;
   // FEM/Linear solver = condensed (condensed_solver.h): its updates of the explicit inverse.
   unsigned n_bordered = 0;        ///< releases taken by bordering
-  unsigned n_low_rank = 0;        ///< low-rank updates for tangent changes
+  unsigned n_low_rank = 0;        ///< solves' tangent changes taken by the Woodbury identity
+  unsigned n_folds = 0;           ///< pending tangent changes folded into the inverse
   unsigned n_refinements = 0;     ///< solves refined once for round-off drift
   unsigned n_drift_refreshes = 0; ///< inverses formed again for round-off drift
 };
