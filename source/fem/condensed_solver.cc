@@ -126,7 +126,7 @@ private:
   std::vector<double> a_;
 };
 
-class Condensed : public JacobianSolver {
+class Condensed : public CondensedSolver {
 public:
   Condensed(CondensedArms arms, TimerOutput& timer) : arms_(std::move(arms)), timer_(timer) {
     setup();
@@ -205,7 +205,184 @@ public:
     ++stats_.n_linear_solves;
   }
 
+  bool crack_plane_newton(Vec& u, const CrackPlaneForces& forces, unsigned epoch,
+                          const NonlinearSettings& settings, double reaction_floor,
+                          unsigned& n_iterations) override {
+    PlaneState cur;
+    {
+      const TimerOutput::Scope timed(timer_, "assembly");
+      // v: the B values in the jump unknowns; lin = S' v from the B rows of K u (the interior
+      // is in equilibrium: (K u)_B = S u_B), moved onto the jump unknowns like a residual.
+      const double* uu = u.trilinos_vector()[0];
+      const Epetra_CrsMatrix& K = arms_.bulk->trilinos_matrix();
+      cur.v.resize(m_);
+      cur.lin.assign(m_, 0.0);
+      for (unsigned k = 0; k < m_; ++k) {
+        cur.v[k] = uu[arms_.boundary[k]];
+        int count = 0;
+        double* values = nullptr;
+        int* columns = nullptr;
+        K.ExtractMyRowView(int(arms_.boundary[k]), count, values, columns);
+        double row = 0;
+        for (int e = 0; e < count; ++e)
+          row += values[e] * uu[columns[e]];
+        cur.lin[k] = row;
+      }
+      for (unsigned k = 0; k < m_; ++k)
+        if (bottom_of_[k] >= 0) {
+          cur.v[k] -= cur.v[bottom_of_[k]];
+          cur.lin[bottom_of_[k]] += cur.lin[k];
+        }
+      evaluate(cur, forces, reaction_floor);
+    }
+    std::vector<double> tangents(point_vars_.size()), dv(m_), sdv(m_);
+    PlaneState trial, best;
+    for (unsigned it = 0; it <= settings.max_iterations; ++it) {
+      if (cur.norm <= settings.tolerance * cur.ref) {
+        write_state(cur.v, u);
+        return true;
+      }
+      if (it == settings.max_iterations)
+        return false;
+      ++n_iterations;
+      for (unsigned p = 0; p < point_vars_.size(); ++p)
+        tangents[p] = forces.interface->respond(p, opening(p, cur.v)).stiffness;
+      update(tangents, epoch);
+      step(cur, dv, sdv);
+      // The line search of newton_solve() on the same norm.
+      double alpha = 1, best_alpha = 0, best_norm = cur.norm, last_alpha = 0;
+      for (int ls = 0; ls < 8; ++ls, alpha *= 0.5) {
+        {
+          const TimerOutput::Scope timed(timer_, "assembly");
+          trial.v = cur.v;
+          trial.lin = cur.lin;
+          for (unsigned k = 0; k < m_; ++k) {
+            trial.v[k] += alpha * dv[k];
+            trial.lin[k] += alpha * sdv[k];
+          }
+          evaluate(trial, forces, reaction_floor);
+        }
+        last_alpha = alpha;
+        if (trial.norm < best_norm) {
+          best_norm = trial.norm;
+          best_alpha = alpha;
+          if (ls + 1 < 8 && trial.norm > (1 - 1e-4 * alpha) * cur.norm)
+            best = trial; // kept only where the search goes on
+        }
+        if (trial.norm <= (1 - 1e-4 * alpha) * cur.norm)
+          break;
+      }
+      if (best_alpha == 0)
+        return false; // the full Newton's round-off floor and diagnosis decide
+      // (newton_solve() also accepts a creeping step at its round-off floor, which is not
+      // known here: such a run ends here without decrease or at the iteration limit, and the
+      // full Newton from u decides.)
+      std::swap(cur, best_alpha == last_alpha ? trial : best);
+    }
+    return false;
+  }
+
 private:
+  /// A crack-plane state: the unknowns (jumps), S' v, the residual on the unknowns, the norm of
+  /// the condensed residual and the reaction norm of the convergence test.
+  struct PlaneState {
+    std::vector<double> v, lin, r;
+    double norm = 0, ref = 0;
+  };
+
+  double opening(unsigned p, const std::vector<double>& v) const {
+    double o = 0;
+    for (const auto& [i, ni] : point_vars_[p])
+      o += ni * v[i];
+    return o;
+  }
+
+  /// r = S' v + the interface forces (on the jumps: a point's force acts +N on the top and -N
+  /// on the bottom, so on a bottom unknown it cancels); the norm of the condensed residual in
+  /// the physical unknowns, as the full model's (a free bottom under a free jump carries
+  /// r_b = r'_b - r'_t; held unknowns none); the reaction norm from the load-line rows.
+  void evaluate(PlaneState& s, const CrackPlaneForces& forces, double reaction_floor) const {
+    s.r = s.lin;
+    for (unsigned p = 0; p < point_vars_.size(); ++p) {
+      if (!forces.active[p])
+        continue;
+      const double F = forces.interface->respond(p, opening(p, s.v)).force;
+      if (F == 0)
+        continue;
+      for (const auto& [i, ni] : point_vars_[p])
+        s.r[i] += ni * F;
+    }
+    double n2 = 0;
+    for (unsigned k = 0; k < m_; ++k) {
+      if (zero_[k])
+        continue;
+      double x = s.r[k];
+      if (top_of_[k] >= 0 && !zero_[top_of_[k]])
+        x -= s.r[top_of_[k]];
+      n2 += x * x;
+    }
+    s.norm = std::sqrt(n2);
+    double r2 = 0;
+    for (const auto& [plus, minus] : reaction_rows_) {
+      const double x = s.r[plus] - (minus >= 0 ? s.r[minus] : 0.0);
+      r2 += x * x;
+    }
+    s.ref = std::max(std::sqrt(r2), reaction_floor);
+  }
+
+  /// The Newton step dv = -M^-1 r on the free unknowns and S' dv: on the free rows
+  /// -r - T dv (M = S'_FF + T), on the held rows the reactions read from S' itself.
+  void step(const PlaneState& s, std::vector<double>& dv, std::vector<double>& sdv) {
+    const TimerOutput::Scope timed(timer_, "solve");
+    for (unsigned a = 0; a < f_; ++a)
+      rv_[a] = -s.r[var_[a]];
+    dense_solve();
+    ++stats_.n_linear_solves;
+    std::fill(dv.begin(), dv.end(), 0.0);
+    std::fill(sdv.begin(), sdv.end(), 0.0);
+    for (unsigned a = 0; a < f_; ++a) {
+      dv[var_[a]] = vf_[a];
+      sdv[var_[a]] = rv_[a];
+    }
+    for (unsigned p = 0; p < point_vars_.size(); ++p)
+      if (current_[p] != 0) {
+        const double o = opening(p, dv);
+        if (o != 0)
+          for (const auto& [i, ni] : point_vars_[p])
+            if (pos_[i] >= 0)
+              sdv[i] -= current_[p] * ni * o;
+      }
+    for (const unsigned l : lpos_) {
+      if (!zero_[l])
+        continue; // a free row has its S' dv above
+      double x = 0;
+      for (unsigned a = 0; a < f_; ++a)
+        x += sp_[std::size_t(l) * m_ + var_[a]] * vf_[a];
+      sdv[l] = x;
+    }
+  }
+
+  /// u from the crack-plane unknowns: u_B, then the interior u_I = -K_II^-1 K_IB u_B.
+  void write_state(const std::vector<double>& v, Vec& u) {
+    const TimerOutput::Scope timed(timer_, "solve");
+    for (unsigned k = 0; k < m_; ++k)
+      ub_[k] = v[k];
+    for (unsigned k = 0; k < m_; ++k)
+      if (bottom_of_[k] >= 0)
+        ub_[k] += ub_[bottom_of_[k]];
+    std::fill(yi_.begin(), yi_.end(), 0.0);
+    for (unsigned k = 0; k < m_; ++k)
+      if (ub_[k] != 0)
+        for (const auto& [c, val] : kbi_[k])
+          yi_[c] -= val * ub_[k];
+    chol_.solve(yi_.data(), 0, n_i_);
+    double* out = u.trilinos_vector()[0];
+    for (unsigned i = 0; i < n_i_; ++i)
+      out[idof_[i]] = yi_[i];
+    for (unsigned k = 0; k < m_; ++k)
+      out[arms_.boundary[k]] = ub_[k];
+  }
+
   /// Relative residual of the dense solve above which it is refined once: a few hundred times
   /// the round-off of a fresh inverse (measured 3e-13 on the seed mesh), 10 times below the
   /// largest error accepted.
@@ -292,12 +469,31 @@ private:
     // The jump unknowns: for a pair (t, b) the unknown at t is u_t - u_b, so u = P v with
     // u_t = v_t + v_b; the condensed matrix is P^T S P, symmetrized (round-off only).
     bottom_of_.assign(m_, -1);
+    top_of_.assign(m_, -1);
     for (const auto& [t, b] : arms_.pairs) {
       if (bpos[t] < 0 || bpos[b] < 0)
         throw ComputationError("FEM/Linear solver = condensed: a crack-plane pair outside the "
                                "condensed dofs");
       bottom_of_[bpos[t]] = bpos[b];
+      top_of_[bpos[b]] = bpos[t];
     }
+    // A load-line dof may be a crack-plane dof too (a load line on the crack plane's end):
+    // its reaction is then r_t = r'_t (a top) or r_b = r'_b - r'_t (a bottom).
+    std::vector<bool> tracked(m_, false);
+    for (const auto d : arms_.loads) {
+      if (bpos[d] < 0)
+        throw ComputationError("FEM/Linear solver = condensed: a load-line dof outside the "
+                               "condensed dofs");
+      const unsigned k = bpos[d];
+      const int minus = top_of_[k];
+      reaction_rows_.emplace_back(k, minus);
+      tracked[k] = true;
+      if (minus >= 0)
+        tracked[minus] = true;
+    }
+    for (unsigned k = 0; k < m_; ++k)
+      if (tracked[k])
+        lpos_.push_back(k);
     for (unsigned t = 0; t < m_; ++t)
       if (bottom_of_[t] >= 0) {
         const unsigned b = bottom_of_[t];
@@ -795,6 +991,10 @@ private:
   ProfileCholesky chol_;                                      ///< K_II
   std::vector<std::vector<std::pair<unsigned, double>>> kbi_; ///< K_BI rows (I in band order)
   std::vector<int> bottom_of_; ///< B index of a top's bottom partner, -1 for others
+  std::vector<int> top_of_;    ///< B index of a bottom's top partner, -1 for others
+  /// The reactions: r'[first] - r'[second] (second -1: none), one per load-line dof.
+  std::vector<std::pair<unsigned, int>> reaction_rows_;
+  std::vector<unsigned> lpos_; ///< B indices whose S' v the reactions read
   std::vector<double> sp_;     ///< P^T S P (m x m)
   std::vector<std::vector<std::pair<unsigned, double>>> point_vars_;
   std::vector<bool> zero_;      ///< unknowns held at zero by the current constraints
@@ -821,7 +1021,7 @@ private:
 
 } // namespace
 
-std::unique_ptr<JacobianSolver> make_condensed_solver(CondensedArms arms, TimerOutput& timer) {
+std::unique_ptr<CondensedSolver> make_condensed_solver(CondensedArms arms, TimerOutput& timer) {
   return std::make_unique<Condensed>(std::move(arms), timer);
 }
 

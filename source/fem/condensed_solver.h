@@ -12,7 +12,10 @@
 // (O(k m^2)). The model's algorithm (Newton, controls, J, outputs) is untouched: this strategy
 // solves the same systems as klu, without assembling or factorizing the Trilinos Jacobian.
 // Serial (one rank), small-strain kinematics only.
+#include "equilibrium_problem.h"
 #include "jacobian_solver.h"
+
+#include "fiberbridge/fem/cohesive_interface.h"
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -36,9 +39,35 @@ struct CondensedArms {
   std::vector<std::vector<std::pair<dof_index, double>>> points;
   /// Per dof: sort key (arm, x, z, y, component) ordering I into slender bands.
   std::vector<std::array<double, 5>> order;
+  /// The load-line dofs (in B): their rows of K u are the reactions of the convergence test.
+  std::vector<dof_index> loads;
 };
 
-std::unique_ptr<JacobianSolver> make_condensed_solver(CondensedArms arms,
-                                                      dealii::TimerOutput& timer);
+/// What the crack-plane Newton reads of the interface: the points' responses, and which points
+/// carry forces (those of segments no longer intact, as CrackPlane::add_forces).
+struct CrackPlaneForces {
+  const CohesiveInterface* interface = nullptr;
+  std::vector<bool> active;
+};
+
+/// The condensed strategy with its own Newton on the crack-plane unknowns.
+class CondensedSolver : public JacobianSolver {
+public:
+  /// Newton on the crack plane (docs/design.md section 2, "Condensed arms"): from u, whose
+  /// interior is in equilibrium with its crack plane (K_II u_I + K_IB u_B = 0 to round-off: a
+  /// converged state, scaled or with ties released), the arms' response is linear, so the
+  /// residual's bulk part is followed on the crack-plane unknowns alone (S' v, kept up to date
+  /// from each step's S' dv = rhs - T dv) and the interior is formed once at the end. Same steps,
+  /// line search and test as newton_solve() (equilibrium_problem.h). Returns true with u the
+  /// converged state; false, with u untouched, where it stops short (line search without
+  /// decrease, the iteration limit): the caller's full Newton then starts from u as before.
+  /// Either way the caller's full Newton checks the state with the full residual.
+  virtual bool crack_plane_newton(Vec& u, const CrackPlaneForces& forces, unsigned epoch,
+                                  const NonlinearSettings& settings, double reaction_floor,
+                                  unsigned& n_iterations) = 0;
+};
+
+std::unique_ptr<CondensedSolver> make_condensed_solver(CondensedArms arms,
+                                                       dealii::TimerOutput& timer);
 
 } // namespace fiberbridge::fem

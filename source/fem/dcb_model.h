@@ -81,6 +81,9 @@ private:
   void condense(const Vec& full, Vec& out);
   void predict(double opening);
   void solve_at(double target);
+  /// FEM/Linear solver = condensed: Newton on the crack-plane unknowns from u_
+  /// (condensed_solver.h); newton_solve() then checks its state with the full residual.
+  void crack_plane_step(const NonlinearSettings& settings);
   void sync() { u_ghost_ = u_; }
   // Growth.
   bool load_to_critical();
@@ -177,6 +180,11 @@ private:
   double last_contraction_ = 1;
   unsigned chord_steps_ = 0;
   std::unique_ptr<JacobianSolver> solver_;
+  /// solver_ where it is the condensed strategy (its crack-plane Newton, crack_plane_step()).
+  CondensedSolver* condensed_ = nullptr;
+  /// The last predict() started from the undeformed state (the hinge guess, whose interior is
+  /// not in equilibrium: the crack-plane Newton does not apply).
+  bool hinge_predictor_ = false;
   /// FEM/Linear solver with auto resolved (the constructor).
   FemParameters::Linear::Solver linear_solver_ = FemParameters::Linear::Solver::klu;
 
@@ -213,6 +221,7 @@ private:
   double j_after_release_ = result::not_available; ///< tip J right after the last release
   FemRunDetails details_;
   unsigned n_trials_ = 0, n_unstable_ = 0;
+  unsigned n_crack_plane_fallbacks_ = 0; ///< crack-plane Newton runs left to the full Newton
   FieldOutput<dim> output_;
   /// FEM/Virtual DIC: samples every recorded state, writes the virtual test at the end.
   std::unique_ptr<VirtualTestRecorder<dim>> virtual_test_;

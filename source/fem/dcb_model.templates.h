@@ -374,6 +374,8 @@ CondensedArms DcbModel<dim>::condensed_arms() const {
   arms.pairs = crack_.node_pairs();
   for (unsigned p = 0; p < crack_.n_points(); ++p)
     arms.points.push_back(crack_.point_weights(p));
+  for (const auto* line : {&crack_.load_top(), &crack_.load_bottom()})
+    arms.loads.insert(arms.loads.end(), line->begin(), line->end());
   // One rank: the owned dofs are all dofs, by index.
   arms.order.resize(owned_support_.size());
   for (unsigned k = 0; k < owned_support_.size(); ++k) {
@@ -392,6 +394,7 @@ void DcbModel<dim>::opening_operator(unsigned p, Vec& c) {
 
 template <int dim>
 void DcbModel<dim>::predict(double opening) {
+  hinge_predictor_ = opening_ == 0;
   if (opening_ != 0)
     u_ *= opening / opening_;
   else {
@@ -464,9 +467,11 @@ void DcbModel<dim>::solve_at(double target) {
     for (unsigned i = 1; i <= n && ok; ++i) {
       const double opening = opening0 + (target - opening0) * double(i) / n;
       predict(opening);
-      ok = prm_.nonlinear.solver == FemParameters::Nonlinear::Solver::kinsol
-               ? kinsol_solve(*this, u_, settings, opening, info_.n_newton, diagnosis)
-               : newton_solve(*this, u_, settings, info_.n_newton, diagnosis);
+      const bool kinsol = prm_.nonlinear.solver == FemParameters::Nonlinear::Solver::kinsol;
+      if (condensed_ && !kinsol && !tip_control_ && !hinge_predictor_)
+        crack_plane_step(settings);
+      ok = kinsol ? kinsol_solve(*this, u_, settings, opening, info_.n_newton, diagnosis)
+                  : newton_solve(*this, u_, settings, info_.n_newton, diagnosis);
     }
     if (ok) {
       sync();
@@ -484,6 +489,26 @@ void DcbModel<dim>::solve_at(double target) {
     << ". Try a smaller FEM/Element size or Maximum opening increment, a softer Contact "
        "stiffness factor, more Maximum Newton iterations, or check the law for a vertical drop";
   throw ComputationError(m.str());
+}
+
+template <int dim>
+void DcbModel<dim>::crack_plane_step(const NonlinearSettings& settings) {
+  // The epochs as setup_jacobian() keeps them (small strain: a new one per tie set).
+  if (solver_ties_epoch_ != epoch_) {
+    ++solver_epoch_;
+    solver_ties_epoch_ = epoch_;
+  }
+  const auto& interface = crack_.interface();
+  CrackPlaneForces forces;
+  forces.interface = &interface;
+  forces.active.assign(crack_.n_points(), false);
+  for (unsigned s = 0; s < interface.n_segments(); ++s)
+    if (interface.state(s) != SegmentState::intact)
+      for (const unsigned p : interface.segment_points(s))
+        forces.active[p] = true;
+  if (!condensed_->crack_plane_newton(u_, forces, solver_epoch_, settings, 1e-6 * j_tip_ * width_,
+                                      info_.n_newton))
+    ++n_crack_plane_fallbacks_;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -834,7 +859,9 @@ result::SimulationResult DcbModel<dim>::run() {
       linear_solver_ = FemParameters::Linear::Solver::klu;
     if (linear_solver_ == FemParameters::Linear::Solver::condensed) {
       try {
-        solver_ = make_condensed_solver(condensed_arms(), timer_);
+        auto condensed = make_condensed_solver(condensed_arms(), timer_);
+        condensed_ = condensed.get();
+        solver_ = std::move(condensed);
       } catch (const ComputationError& e) {
         // A mesh or constraint the condensed arms do not take (condensed_solver.h): auto falls
         // back to klu with a note; an explicit choice fails with the reason.
@@ -996,7 +1023,9 @@ void DcbModel<dim>::summarize(Clock::time_point start) {
                 "Woodbury identity, " +
                 std::to_string(stats.n_folds) + " folded into the inverse, " +
                 std::to_string(stats.n_refinements) + " refined solves, " +
-                std::to_string(stats.n_drift_refreshes) + " refreshes for round-off drift)"
+                std::to_string(stats.n_drift_refreshes) + " refreshes for round-off drift; " +
+                std::to_string(n_crack_plane_fallbacks_) +
+                " crack-plane Newton runs left to the full Newton)"
           : "CG + Trilinos ML AMG on the secant (SPD) Jacobian";
   result_.method.push_back(
       "distributed engine: " + std::to_string(dim) + "D, " + std::to_string(n_ranks_) +
