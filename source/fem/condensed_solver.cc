@@ -138,30 +138,8 @@ public:
   void update(const std::vector<double>& tangents, unsigned epoch) override {
     const TimerOutput::Scope timed(timer_, "factorize");
     current_ = tangents;
-    if (!built_) {
-      built_ = true;
-      read_constraints();
-      rebuild(tangents);
-      epoch_ = epoch;
-      return;
-    }
-    if (epoch != epoch_) {
-      const std::vector<bool> before = zero_;
-      read_constraints();
-      epoch_ = epoch;
-      std::vector<unsigned> added;
-      for (unsigned k = 0; k < m_; ++k) {
-        if (zero_[k] && !before[k]) { // a tie added: not a release, start again
-          rebuild(tangents);
-          return;
-        }
-        if (!zero_[k] && before[k])
-          added.push_back(k);
-      }
-      if (!added.empty())
-        border(added); // with the tangents G holds; the changed ones stay pending
-    }
-    prepare_pending();
+    if (!follow_constraints(epoch))
+      prepare_pending();
   }
 
   void solve(const Vec& rhs, Vec& x) override {
@@ -233,9 +211,21 @@ public:
           cur.v[k] -= cur.v[bottom_of_[k]];
           cur.lin[bottom_of_[k]] += cur.lin[k];
         }
-      evaluate(cur, forces, reaction_floor);
     }
     std::vector<double> tangents(point_vars_.size()), dv(m_), sdv(m_);
+    {
+      // The constraint set of this epoch first (a release frees unknowns: the residual of
+      // their rows counts from now on).
+      const TimerOutput::Scope timed(timer_, "factorize");
+      for (unsigned p = 0; p < point_vars_.size(); ++p)
+        tangents[p] = forces.interface->respond(p, opening(p, cur.v)).stiffness;
+      current_ = tangents;
+      follow_constraints(epoch); // the pending changes are prepared by the first update()
+    }
+    {
+      const TimerOutput::Scope timed(timer_, "assembly");
+      evaluate(cur, forces, reaction_floor);
+    }
     PlaneState trial, best;
     for (unsigned it = 0; it <= settings.max_iterations; ++it) {
       if (cur.norm <= settings.tolerance * cur.ref) {
@@ -399,6 +389,36 @@ private:
   /// Condition (1-norm, LAPACK's estimate) of the capacitance I + G_EE D above which each solve is
   /// checked: its round-off then reaches 1e-16 x 1e6 = 1e-10, the refinement threshold kRefine.
   static constexpr double kMaxCapacitanceCondition = 1e6;
+
+  /// Brings G to the constraint set of `epoch` (current_: the tangents of a rebuild): a
+  /// release borders it, anything else forms it again. True where G was formed again (no
+  /// tangent change pending).
+  bool follow_constraints(unsigned epoch) {
+    if (!built_) {
+      built_ = true;
+      read_constraints();
+      rebuild(current_);
+      epoch_ = epoch;
+      return true;
+    }
+    if (epoch == epoch_)
+      return false;
+    const std::vector<bool> before = zero_;
+    read_constraints();
+    epoch_ = epoch;
+    std::vector<unsigned> added;
+    for (unsigned k = 0; k < m_; ++k) {
+      if (zero_[k] && !before[k]) { // a tie added: not a release, start again
+        rebuild(current_);
+        return true;
+      }
+      if (!zero_[k] && before[k])
+        added.push_back(k);
+    }
+    if (!added.empty())
+      border(added); // with the tangents G holds; the changed ones stay pending
+    return false;
+  }
 
   /// Once per mesh (inside the model's "setup" section): K_II factorized, S formed.
   void setup() {
@@ -948,15 +968,28 @@ private:
 
   void symmetric_multiply(const std::vector<double>& A, const std::vector<double>& x,
                           std::vector<double>& y) const {
+    // Only the upper triangle is read (A is exactly symmetric): the product streams half the
+    // matrix, which is what it costs (a few hundred kB to MB, past the L2 cache).
     double* out = y.data();
+    const double* xs = x.data();
     std::fill(out, out + f_, 0.0);
     for (unsigned b = 0; b < f_; ++b) {
-      const double xb = x[b];
-      if (xb == 0)
-        continue;
+      const double xb = xs[b];
       const double* ab = A.data() + std::size_t(b) * m_;
-      for (unsigned a = 0; a < f_; ++a)
-        out[a] += xb * ab[a];
+      if (xb != 0)
+        for (unsigned a = b + 1; a < f_; ++a)
+          out[a] += xb * ab[a];
+      double s0 = ab[b] * xb, s1 = 0, s2 = 0, s3 = 0;
+      unsigned a = b + 1;
+      for (; a + 4 <= f_; a += 4) {
+        s0 += ab[a] * xs[a];
+        s1 += ab[a + 1] * xs[a + 1];
+        s2 += ab[a + 2] * xs[a + 2];
+        s3 += ab[a + 3] * xs[a + 3];
+      }
+      for (; a < f_; ++a)
+        s0 += ab[a] * xs[a];
+      out[b] += (s0 + s1) + (s2 + s3);
     }
   }
 
