@@ -7,9 +7,14 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
 
+#include <Epetra_BlockMap.h>
+#include <Epetra_MultiVector.h>
+
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <memory>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -187,6 +192,7 @@ void DomainJIntegral<dim>::build(const DoFHandler<dim>& dof_handler, const Mappi
   dofs_.clear();
   shapes_.clear();
   faces_.clear();
+  lid_map_.reset();
   // A cell of MappingQ1 is fixed by its vertices, so cells whose vertices are translates of one
   // another share gradients and JxW. Other mappings may bend cells (manifolds): the plain path.
   const auto* q_mapping = dynamic_cast<const MappingQ<dim>*>(&mapping);
@@ -288,6 +294,21 @@ double DomainJIntegral<dim>::bulk_local(const DoFHandler<dim>& dof_handler,
     return bulk_domain_j_local(dof_handler, mapping, degree, C, u_ghost, q, finite);
   // bulk_domain_j_local's loop on the cached data: the same cells, faces and points in the
   // same order.
+  // The cells' dof values straight from the Epetra vector by local index, as
+  // TrilinosWrappers::MPI::Vector::operator() reads them (it looks each one up in the map):
+  // the local indices are kept while the vector has the same map (a copy holds it alive).
+  const Epetra_MultiVector& values = u_ghost.trilinos_vector();
+  if (!lid_map_ || lid_map_->DataPtr() != values.Map().DataPtr()) {
+    lid_map_ = std::make_unique<Epetra_BlockMap>(values.Map());
+    lids_.resize(dofs_.size());
+    for (std::size_t i = 0; i < dofs_.size(); ++i) {
+      lids_[i] = values.Map().LID(TrilinosWrappers::types::int_type(dofs_[i]));
+      AssertThrow(lids_[i] >= 0, ExcMessage("DomainJIntegral: a locally owned cell's dof " +
+                                            std::to_string(dofs_[i]) +
+                                            " is not in the vector (not a ghosted vector?)"));
+    }
+  }
+  const double* local = values[0];
   std::vector<double> u(n_cell_dofs_);
   std::vector<Tensor<2, dim>> grad(std::max(n_q_, n_face_q_));
   double J = 0;
@@ -295,8 +316,11 @@ double DomainJIntegral<dim>::bulk_local(const DoFHandler<dim>& dof_handler,
     const Cell& cell = cells_[c];
     if (cell.xb <= q.x0 || cell.xa >= q.x3)
       continue;
+    const bool domain = !(cell.xa >= q.x1 && cell.xb <= q.x2);
+    if (!domain && cell.first_face == cell.end_face)
+      continue;
     for (unsigned i = 0; i < n_cell_dofs_; ++i)
-      u[i] = u_ghost(dofs_[c * n_cell_dofs_ + i]);
+      u[i] = local[lids_[c * n_cell_dofs_ + i]];
     for (unsigned f = cell.first_face; f < cell.end_face; ++f) {
       const Face& face = faces_[f];
       if (face.xb <= q.x0 || face.xa >= q.x3)
@@ -312,7 +336,7 @@ double DomainJIntegral<dim>::bulk_local(const DoFHandler<dim>& dof_handler,
       }
       J += term;
     }
-    if (cell.xa >= q.x1 && cell.xb <= q.x2)
+    if (!domain)
       continue;
     const Shape& shape = shapes_[cell.shape];
     gather_gradients<dim>(u, component_, shape.grad.data(), n_q_, grad);

@@ -9,8 +9,11 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 
+#include <Epetra_BlockMap.h>
+
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace fiberbridge::fem {
@@ -68,7 +71,10 @@ public:
   double bulk_local(const dealii::DoFHandler<dim>& dof_handler, const dealii::Mapping<dim>& mapping,
                     unsigned degree, const dealii::SymmetricTensor<4, dim>& C, const Vec& u_ghost,
                     const Ramp& q, bool finite);
-  void clear() { dof_handler_ = nullptr; }
+  void clear() {
+    dof_handler_ = nullptr;
+    lid_map_.reset();
+  }
   /// Distinct cell shapes of the cached mesh (0 before the first call or where the fallback
   /// applies): what the cache saves, for the tests.
   std::size_t n_shapes() const { return shapes_.size(); }
@@ -105,6 +111,10 @@ private:
   std::vector<dealii::types::global_dof_index> dofs_; ///< n_cell_dofs_ per cell of cells_
   std::vector<Shape> shapes_;
   std::vector<Face> faces_;
+  /// Local indices of dofs_ in the map of the vector last read, and that map (a copy, which
+  /// keeps its data alive so that a new map cannot take its address).
+  std::unique_ptr<Epetra_BlockMap> lid_map_;
+  std::vector<int> lids_;
 };
 
 } // namespace fiberbridge::fem
