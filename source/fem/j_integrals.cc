@@ -6,6 +6,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
+#include <deal.II/fe/mapping_q1.h>
 
 #include <Epetra_BlockMap.h>
 #include <Epetra_MultiVector.h>
@@ -16,6 +17,7 @@
 #include <memory>
 #include <string>
 #include <tuple>
+#include <typeinfo>
 #include <utility>
 
 namespace fiberbridge::fem {
@@ -194,9 +196,13 @@ void DomainJIntegral<dim>::build(const DoFHandler<dim>& dof_handler, const Mappi
   faces_.clear();
   lid_map_.reset();
   // A cell of MappingQ1 is fixed by its vertices, so cells whose vertices are translates of one
-  // another share gradients and JxW. Other mappings may bend cells (manifolds): the plain path.
-  const auto* q_mapping = dynamic_cast<const MappingQ<dim>*>(&mapping);
-  fallback_ = q_mapping == nullptr || q_mapping->get_degree() != 1;
+  // another share gradients and JxW. Other mappings may bend cells (manifolds) or move them
+  // (MappingQEulerian, MappingQCache: derived from MappingQ, hence the exact type): the plain
+  // path.
+  const bool q1 = typeid(mapping) == typeid(MappingQ1<dim>) ||
+                  (typeid(mapping) == typeid(MappingQ<dim>) &&
+                   static_cast<const MappingQ<dim>&>(mapping).get_degree() == 1);
+  fallback_ = !q1;
   if (fallback_)
     return;
   const auto& fe = dof_handler.get_fe();
@@ -262,7 +268,6 @@ void DomainJIntegral<dim>::build(const DoFHandler<dim>& dof_handler, const Mappi
         if (cell->face(f)->at_boundary() && normal_has_x<dim>(cell->face(f))) {
           face_values.reinit(cell, f);
           Face face;
-          face.cell = cells_.size();
           std::tie(face.xa, face.xb) = x_range(cell->face(f));
           face.grad.resize(std::size_t(n_face_q_) * n_cell_dofs_ * dim);
           for (unsigned k = 0; k < n_face_q_; ++k) {
@@ -293,8 +298,7 @@ double DomainJIntegral<dim>::bulk_local(const DoFHandler<dim>& dof_handler,
   if (fallback_)
     return bulk_domain_j_local(dof_handler, mapping, degree, C, u_ghost, q, finite);
   // bulk_domain_j_local's loop on the cached data: the same cells, faces and points in the
-  // same order.
-  // The cells' dof values straight from the Epetra vector by local index, as
+  // same order. The cells' dof values straight from the Epetra vector by local index, as
   // TrilinosWrappers::MPI::Vector::operator() reads them (it looks each one up in the map):
   // the local indices are kept while the vector has the same map (a copy holds it alive).
   const Epetra_MultiVector& values = u_ghost.trilinos_vector();

@@ -56,15 +56,15 @@ double bulk_domain_j_local(const dealii::DoFHandler<dim>& dof_handler,
 
 /// bulk_domain_j_local with the cell data it needs built once per mesh: each locally owned
 /// cell's x range and dofs, the boundary faces whose normal has an x component (with their
-/// shape gradients, quadrature points and n_1 JxW), and the shape gradients, JxW and quadrature
+/// shape gradients, quadrature points, n_1 and JxW), and the shape gradients, JxW and quadrature
 /// point offsets of each distinct cell shape (the generated meshes have a few: a size per layer,
-/// as DcbModel::assemble_bulk's shape_matrices_). A call then only gathers the dof values of the
-/// cells in the strip: no FEValues reinit. Same sums in the same order as bulk_domain_j_local,
-/// so the same J to round-off (cells of one shape share gradients computed on one of them).
-/// Built on the first call, and again where it is called with another DoFHandler, mapping or
-/// degree or the mesh's cell or dof counts changed; a mesh changed in place with the same counts
-/// needs clear(). A mapping other than MappingQ of degree 1 (whose cells are not fixed by their
-/// vertices alone) takes bulk_domain_j_local.
+/// as DcbModel::assemble_bulk's shape_matrices_). A call then only reads the dof values of the
+/// cells where q varies or with such a face inside the ramp: no FEValues reinit. Same sums in the
+/// same order as bulk_domain_j_local, so the same J to round-off (cells of one shape share
+/// gradients computed on one of them). Built on the first call, and again where it is called with
+/// another DoFHandler, mapping or degree or the mesh's cell or dof counts changed; a mesh changed
+/// in place with the same counts needs clear(). A mapping other than MappingQ1 (or MappingQ of
+/// degree 1), whose cells are not fixed by their vertices alone, takes bulk_domain_j_local.
 template <int dim>
 class DomainJIntegral {
 public:
@@ -89,7 +89,6 @@ private:
     std::vector<double> grad, JxW, dx; ///< dx: x of the point minus x of the cell's vertex 0
   };
   struct Face {
-    unsigned cell;                        ///< index into cells_
     double xa, xb;                        ///< x range of its vertices
     std::vector<double> grad, n1, JxW, x; ///< as Shape; n_1, JxW and x at its points
   };
