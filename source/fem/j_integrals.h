@@ -9,8 +9,12 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 
+#include <Epetra_BlockMap.h>
+
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 namespace fiberbridge::fem {
 
@@ -49,5 +53,67 @@ double bulk_domain_j_local(const dealii::DoFHandler<dim>& dof_handler,
                            const dealii::Mapping<dim>& mapping, unsigned degree,
                            const dealii::SymmetricTensor<4, dim>& C, const Vec& u_ghost,
                            const Ramp& q, bool finite);
+
+/// bulk_domain_j_local with the cell data it needs built once per mesh: each locally owned
+/// cell's x range and dofs, the boundary faces whose normal has an x component (with their
+/// shape gradients, quadrature points, n_1 and JxW), and the shape gradients, JxW and quadrature
+/// point offsets of each distinct cell shape (the generated meshes have a few: a size per layer,
+/// as DcbModel::assemble_bulk's shape_matrices_). A call then only reads the dof values of the
+/// cells where q varies or with such a face inside the ramp: no FEValues reinit. Same sums in the
+/// same order as bulk_domain_j_local, so the same J to round-off (cells of one shape share
+/// gradients computed on one of them). Built on the first call, and again where it is called with
+/// another DoFHandler, mapping or degree or the mesh's cell or dof counts changed; a mesh changed
+/// in place with the same counts needs clear(). A mapping other than MappingQ1 (or MappingQ of
+/// degree 1), whose cells are not fixed by their vertices alone, takes bulk_domain_j_local.
+template <int dim>
+class DomainJIntegral {
+public:
+  double bulk_local(const dealii::DoFHandler<dim>& dof_handler, const dealii::Mapping<dim>& mapping,
+                    unsigned degree, const dealii::SymmetricTensor<4, dim>& C, const Vec& u_ghost,
+                    const Ramp& q, bool finite);
+  void clear() {
+    dof_handler_ = nullptr;
+    lid_map_.reset();
+  }
+  /// Distinct cell shapes of the cached mesh (0 before the first call or where the fallback
+  /// applies): what the cache saves, for the tests.
+  std::size_t n_shapes() const { return shapes_.size(); }
+
+private:
+  void build(const dealii::DoFHandler<dim>& dof_handler, const dealii::Mapping<dim>& mapping,
+             unsigned degree);
+
+  /// Gradients of the shape functions at the quadrature points, flat: grad[(k n + i) dim + d]
+  /// is d phi_i / d x_d at point k (phi_i's one nonzero component is component_[i]).
+  struct Shape {
+    std::vector<double> grad, JxW, dx; ///< dx: x of the point minus x of the cell's vertex 0
+  };
+  struct Face {
+    double xa, xb;                        ///< x range of its vertices
+    std::vector<double> grad, n1, JxW, x; ///< as Shape; n_1, JxW and x at its points
+  };
+  struct Cell {
+    double xa, xb, x_vertex0;
+    unsigned shape;
+    unsigned first_face, end_face; ///< its free faces in faces_
+  };
+
+  const dealii::DoFHandler<dim>* dof_handler_ = nullptr;
+  const dealii::Mapping<dim>* mapping_ = nullptr;
+  unsigned degree_ = 0;
+  dealii::types::global_dof_index n_dofs_ = 0;
+  unsigned n_cells_ = 0;
+  bool fallback_ = false;
+  unsigned n_cell_dofs_ = 0, n_q_ = 0, n_face_q_ = 0;
+  std::vector<unsigned> component_;
+  std::vector<Cell> cells_;                           ///< locally owned, in active cell order
+  std::vector<dealii::types::global_dof_index> dofs_; ///< n_cell_dofs_ per cell of cells_
+  std::vector<Shape> shapes_;
+  std::vector<Face> faces_;
+  /// Local indices of dofs_ in the map of the vector last read, and that map (a copy, which
+  /// keeps its data alive so that a new map cannot take its address).
+  std::unique_ptr<Epetra_BlockMap> lid_map_;
+  std::vector<int> lids_;
+};
 
 } // namespace fiberbridge::fem
