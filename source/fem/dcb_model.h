@@ -11,6 +11,7 @@
 #include "dcb_geometry.h"
 #include "equilibrium_problem.h"
 #include "field_output.h"
+#include "j_integrals.h"
 #include "jacobian_solver.h"
 #include "virtual_dic.h"
 
@@ -58,7 +59,9 @@ private:
     crack_.make_constraints(opening, relevant_, c);
   }
   // EquilibriumProblem.
-  void reinit_vector(Vec& v) const override { v.reinit(owned_, comm_); }
+  /// Zero, on u_'s layout (its Epetra map is shared, not built again from owned_: Newton asks
+  /// for five vectors per solve).
+  void reinit_vector(Vec& v) const override { v.reinit(u_, false); }
   MPI_Comm communicator() const override { return comm_; }
   double n_dofs() const override { return double(dof_handler_.n_dofs()); }
   void residual(const Vec& u, Vec& r, Vec& r_full) override;
@@ -223,6 +226,7 @@ private:
   unsigned n_trials_ = 0, n_unstable_ = 0;
   unsigned n_crack_plane_fallbacks_ = 0; ///< crack-plane Newton runs left to the full Newton
   FieldOutput<dim> output_;
+  mutable DomainJIntegral<dim> j_domain_; ///< domain_j()'s cell data, built on its first call
   /// FEM/Virtual DIC: samples every recorded state, writes the virtual test at the end.
   std::unique_ptr<VirtualTestRecorder<dim>> virtual_test_;
 };

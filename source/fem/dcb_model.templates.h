@@ -621,8 +621,8 @@ double DcbModel<dim>::domain_j(const Ramp& q, bool crack_face_term) const {
   // J B = int_V (sigma_i1 u_i,1 - W) q,1 dV + int_faces sigma_coh d(delta)/dx q dA (Moran & Shih;
   // q = q(x) across the whole width, so in 3D this is the width average of J along a straight
   // front). Divided by the width: per unit width, as the 2D J.
-  double J = gsum(bulk_domain_j_local(dof_handler_, mapping_, prm_.mesh.degree, C_, u_ghost_, q,
-                                      finite_)) /
+  double J = gsum(j_domain_.bulk_local(dof_handler_, mapping_, prm_.mesh.degree, C_, u_ghost_, q,
+                                       finite_)) /
              width_;
   if (crack_face_term)
     J += crack_face_j(&q);
