@@ -165,27 +165,14 @@ public:
     std::fill(ub_.begin(), ub_.end(), 0.0);
     for (unsigned a = 0; a < f_; ++a)
       ub_[var_[a]] = vf_[a];
-    for (unsigned k = 0; k < m_; ++k)
-      if (bottom_of_[k] >= 0)
-        ub_[k] += ub_[bottom_of_[k]];
-    for (unsigned i = 0; i < n_i_; ++i)
-      yi_[i] = r[idof_[i]];
-    for (unsigned k = 0; k < m_; ++k)
-      if (ub_[k] != 0)
-        for (const auto& [c, v] : kbi_[k])
-          yi_[c] -= v * ub_[k];
-    chol_.solve(yi_.data(), 0, n_i_);
-    double* out = x.trilinos_vector()[0];
-    for (unsigned i = 0; i < n_i_; ++i)
-      out[idof_[i]] = yi_[i];
-    for (unsigned k = 0; k < m_; ++k)
-      out[arms_.boundary[k]] = ub_[k];
+    write_full(r, x);
     ++stats_.n_linear_solves;
   }
 
   bool crack_plane_newton(Vec& u, const CrackPlaneForces& forces, unsigned epoch,
                           const NonlinearSettings& settings, double reaction_floor,
-                          unsigned& n_iterations) override {
+                          unsigned& used) override {
+    used = 0;
     PlaneState cur;
     {
       const TimerOutput::Scope timed(timer_, "assembly");
@@ -233,8 +220,8 @@ public:
         return true;
       }
       if (it == settings.max_iterations)
-        return false;
-      ++n_iterations;
+        break;
+      ++used;
       for (unsigned p = 0; p < point_vars_.size(); ++p)
         tangents[p] = forces.interface->respond(p, opening(p, cur.v)).stiffness;
       update(tangents, epoch);
@@ -262,13 +249,18 @@ public:
         if (trial.norm <= (1 - 1e-4 * alpha) * cur.norm)
           break;
       }
-      if (best_alpha == 0)
-        return false; // the full Newton's round-off floor and diagnosis decide
+      if (best_alpha == 0) {
+        // The full Newton takes this iteration again from the same state (and counts it), where
+        // its round-off floor and diagnosis decide.
+        --used;
+        break;
+      }
       // (newton_solve() also accepts a creeping step at its round-off floor, which is not
       // known here: such a run ends here without decrease or at the iteration limit, and the
       // full Newton from u decides.)
       std::swap(cur, best_alpha == last_alpha ? trial : best);
     }
+    write_state(cur.v, u);
     return false;
   }
 
@@ -355,18 +347,24 @@ private:
   /// u from the crack-plane unknowns: u_B, then the interior u_I = -K_II^-1 K_IB u_B.
   void write_state(const std::vector<double>& v, Vec& u) {
     const TimerOutput::Scope timed(timer_, "solve");
-    for (unsigned k = 0; k < m_; ++k)
-      ub_[k] = v[k];
+    std::copy(v.begin(), v.end(), ub_.begin());
+    write_full(nullptr, u);
+  }
+
+  /// x from the B unknowns in ub_ (jumps, turned into displacements here) and the interior
+  /// x_I = K_II^-1 (r_I - K_IB u_B) (r null: no interior right-hand side).
+  void write_full(const double* r, Vec& x) {
     for (unsigned k = 0; k < m_; ++k)
       if (bottom_of_[k] >= 0)
         ub_[k] += ub_[bottom_of_[k]];
-    std::fill(yi_.begin(), yi_.end(), 0.0);
+    for (unsigned i = 0; i < n_i_; ++i)
+      yi_[i] = r ? r[idof_[i]] : 0.0;
     for (unsigned k = 0; k < m_; ++k)
       if (ub_[k] != 0)
-        for (const auto& [c, val] : kbi_[k])
-          yi_[c] -= val * ub_[k];
+        for (const auto& [c, v] : kbi_[k])
+          yi_[c] -= v * ub_[k];
     chol_.solve(yi_.data(), 0, n_i_);
-    double* out = u.trilinos_vector()[0];
+    double* out = x.trilinos_vector()[0];
     for (unsigned i = 0; i < n_i_; ++i)
       out[idof_[i]] = yi_[i];
     for (unsigned k = 0; k < m_; ++k)

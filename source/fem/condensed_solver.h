@@ -58,13 +58,15 @@ public:
   /// converged state, scaled or with ties released), the arms' response is linear, so the
   /// residual's bulk part is followed on the crack-plane unknowns alone (S' v, kept up to date
   /// from each step's S' dv = rhs - T dv) and the interior is formed once at the end. Same steps,
-  /// line search and test as newton_solve() (equilibrium_problem.h). Returns true with u the
-  /// converged state; false, with u untouched, where it stops short (line search without
-  /// decrease, the iteration limit): the caller's full Newton then starts from u as before.
-  /// Either way the caller's full Newton checks the state with the full residual.
+  /// line search and test as newton_solve() (equilibrium_problem.h). Leaves u at its last state
+  /// (the interior formed from it) and returns its iterations in `used`: true where it
+  /// converged; false where it stopped short (a line search without decrease, the iteration
+  /// limit), and the caller's full Newton goes on from u with what is left of the budget (it
+  /// knows the round-off floor, which may accept such a state). Either way the full Newton
+  /// checks the state with the full residual.
   virtual bool crack_plane_newton(Vec& u, const CrackPlaneForces& forces, unsigned epoch,
                                   const NonlinearSettings& settings, double reaction_floor,
-                                  unsigned& n_iterations) = 0;
+                                  unsigned& used) = 0;
 };
 
 std::unique_ptr<CondensedSolver> make_condensed_solver(CondensedArms arms,

@@ -85,8 +85,9 @@ private:
   void predict(double opening);
   void solve_at(double target);
   /// FEM/Linear solver = condensed: Newton on the crack-plane unknowns from u_
-  /// (condensed_solver.h); newton_solve() then checks its state with the full residual.
-  void crack_plane_step(const NonlinearSettings& settings);
+  /// (condensed_solver.h). Returns the settings newton_solve() then checks u_ with and, where the
+  /// crack-plane Newton stopped short, goes on with (what is left of the budget).
+  NonlinearSettings crack_plane_step(const NonlinearSettings& settings);
   void sync() { u_ghost_ = u_; }
   // Growth.
   bool load_to_critical();

@@ -468,10 +468,11 @@ void DcbModel<dim>::solve_at(double target) {
       const double opening = opening0 + (target - opening0) * double(i) / n;
       predict(opening);
       const bool kinsol = prm_.nonlinear.solver == FemParameters::Nonlinear::Solver::kinsol;
-      if (condensed_ && !kinsol && !tip_control_ && !hinge_predictor_)
-        crack_plane_step(settings);
+      const NonlinearSettings rest = condensed_ && !kinsol && !tip_control_ && !hinge_predictor_
+                                         ? crack_plane_step(settings)
+                                         : settings;
       ok = kinsol ? kinsol_solve(*this, u_, settings, opening, info_.n_newton, diagnosis)
-                  : newton_solve(*this, u_, settings, info_.n_newton, diagnosis);
+                  : newton_solve(*this, u_, rest, info_.n_newton, diagnosis);
     }
     if (ok) {
       sync();
@@ -492,7 +493,7 @@ void DcbModel<dim>::solve_at(double target) {
 }
 
 template <int dim>
-void DcbModel<dim>::crack_plane_step(const NonlinearSettings& settings) {
+NonlinearSettings DcbModel<dim>::crack_plane_step(const NonlinearSettings& settings) {
   // The epochs as setup_jacobian() keeps them (small strain: a new one per tie set).
   if (solver_ties_epoch_ != epoch_) {
     ++solver_epoch_;
@@ -506,9 +507,16 @@ void DcbModel<dim>::crack_plane_step(const NonlinearSettings& settings) {
     if (interface.state(s) != SegmentState::intact)
       for (const unsigned p : interface.segment_points(s))
         forces.active[p] = true;
-  if (!condensed_->crack_plane_newton(u_, forces, solver_epoch_, settings, 1e-6 * j_tip_ * width_,
-                                      info_.n_newton))
+  unsigned used = 0;
+  const bool converged = condensed_->crack_plane_newton(u_, forces, solver_epoch_, settings,
+                                                        1e-6 * j_tip_ * width_, used);
+  info_.n_newton += used;
+  if (!converged)
     ++n_crack_plane_fallbacks_;
+  NonlinearSettings rest = settings;
+  rest.spent = used;
+  rest.max_iterations = settings.max_iterations - used;
+  return rest;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1025,7 +1033,7 @@ void DcbModel<dim>::summarize(Clock::time_point start) {
                 std::to_string(stats.n_refinements) + " refined solves, " +
                 std::to_string(stats.n_drift_refreshes) + " refreshes for round-off drift; " +
                 std::to_string(n_crack_plane_fallbacks_) +
-                " crack-plane Newton runs left to the full Newton)"
+                " crack-plane Newton runs stopped short and went on in the full Newton)"
           : "CG + Trilinos ML AMG on the secant (SPD) Jacobian";
   result_.method.push_back(
       "distributed engine: " + std::to_string(dim) + "D, " + std::to_string(n_ranks_) +

@@ -39,6 +39,10 @@ public:
 struct NonlinearSettings {
   double tolerance = 1e-9;
   unsigned max_iterations = 25;
+  /// Iterations already spent on this solve by the crack-plane Newton (condensed_solver.h), whose
+  /// state the full Newton continues from with what is left of the budget: only for the count
+  /// a failure names.
+  unsigned spent = 0;
 };
 
 /// Newton with backtracking line search from u (the predictor) to equilibrium. Returns false

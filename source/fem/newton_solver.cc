@@ -75,7 +75,7 @@ bool newton_solve(EquilibriumProblem& problem, Vec& u, const NonlinearSettings& 
   }
   if (nrm <= problem.roundoff_floor(u)) // the iteration limit reached at round-off: equilibrium
     return true;
-  diagnosis = "no convergence in " + std::to_string(settings.max_iterations) +
+  diagnosis = "no convergence in " + std::to_string(settings.spent + settings.max_iterations) +
               " Newton iterations (residual " + fmt(nrm / ref) + " of the reaction, tolerance " +
               fmt(settings.tolerance) + ")" + problem.contact_summary();
   return false;
