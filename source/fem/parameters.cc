@@ -202,8 +202,9 @@ void FemParameters::Linear::declare_parameters(dealii::ParameterHandler& prm) {
       dealii::Patterns::Selection("auto|klu|umfpack|mumps|cg_amg|condensed"),
       "Solver of the Jacobian systems: condensed (the linear elastic arms condensed "
       "onto the crack plane once per mesh, a dense inverse of the crack-plane system "
-      "updated at each release and tangent change; the same systems as klu, about twice as "
-      "fast on the seed mesh; 2D, one MPI rank, Kinematics = small only, else an input "
+      "bordered at each release, tangent changes by the Woodbury identity, Newton on the "
+      "crack-plane unknowns; the same R curves as klu, 4.6 times as fast on the seed mesh; "
+      "2D, one MPI rank, Kinematics = small only, else an input "
       "error); auto (condensed where it applies and the "
       "crack plane has at most 1000 dofs, else klu); klu (Trilinos Amesos "
       "KLU; on several ranks "

@@ -62,8 +62,9 @@ TEST(ModelRegistry, SceneItemsComeFromTheRegistryInCostOrder) {
   ASSERT_EQ(sims.size(), built.size());
   for (std::size_t i = 0; i < built.size(); ++i) {
     EXPECT_EQ(sims[i], built[i]->name);
-    if (i > 0)
+    if (i > 0) { // braces: EXPECT_LE is an if-else of its own (-Wdangling-else)
       EXPECT_LE(built[i - 1]->cost, built[i]->cost);
+    }
   }
   EXPECT_EQ(app::scene_items().back().name, "study");
 }
