@@ -28,6 +28,23 @@ using namespace dealii;
 
 namespace {
 
+/// first + sum of a[k] b[k] over [from, to) in four partial sums: a single sum is a chain of
+/// dependent additions that does not vectorize (the band solve's forward half took twice its
+/// backward axpy half).
+double dot(const double* a, const double* b, unsigned from, unsigned to, double first = 0) {
+  double s0 = first, s1 = 0, s2 = 0, s3 = 0;
+  unsigned k = from;
+  for (; k + 4 <= to; k += 4) {
+    s0 += a[k] * b[k];
+    s1 += a[k + 1] * b[k + 1];
+    s2 += a[k + 2] * b[k + 2];
+    s3 += a[k + 3] * b[k + 3];
+  }
+  for (; k < to; ++k)
+    s0 += a[k] * b[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
 /// Profile (skyline) Cholesky of an SPD matrix: row i keeps its columns first[i]..i. The arms'
 /// interior ordered along x is a band of a few dozen columns, so the profile is the band.
 class ProfileCholesky {
@@ -90,19 +107,7 @@ public:
   void solve(double* x, unsigned from, unsigned to) const {
     for (unsigned i = from; i < to; ++i) {
       const double* li = row(i);
-      // Four partial sums: a single one is a chain of dependent additions that does not
-      // vectorize (the forward half took twice the backward axpy half).
-      double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-      unsigned k = std::max(first_[i], from);
-      for (; k + 4 <= i; k += 4) {
-        s0 += li[k] * x[k];
-        s1 += li[k + 1] * x[k + 1];
-        s2 += li[k + 2] * x[k + 2];
-        s3 += li[k + 3] * x[k + 3];
-      }
-      for (; k < i; ++k)
-        s0 += li[k] * x[k];
-      x[i] = (x[i] - ((s0 + s1) + (s2 + s3))) / li[i];
+      x[i] = (x[i] - dot(li, x, std::max(first_[i], from), i)) / li[i];
     }
     const unsigned bottom = from < n_ ? block_start_[from] : n_;
     for (unsigned i = to; i-- > bottom;) {
@@ -977,17 +982,7 @@ private:
       if (xb != 0)
         for (unsigned a = b + 1; a < f_; ++a)
           out[a] += xb * ab[a];
-      double s0 = ab[b] * xb, s1 = 0, s2 = 0, s3 = 0;
-      unsigned a = b + 1;
-      for (; a + 4 <= f_; a += 4) {
-        s0 += ab[a] * xs[a];
-        s1 += ab[a + 1] * xs[a + 1];
-        s2 += ab[a + 2] * xs[a + 2];
-        s3 += ab[a + 3] * xs[a + 3];
-      }
-      for (; a < f_; ++a)
-        s0 += ab[a] * xs[a];
-      out[b] += (s0 + s1) + (s2 + s3);
+      out[b] += dot(ab, xs, b + 1, f_, ab[b] * xb);
     }
   }
 
