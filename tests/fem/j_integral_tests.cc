@@ -111,6 +111,21 @@ struct Problem {
 const std::vector<fem::Ramp> kRamps = {
     {0.8, 1.4, 1.9, 2.6}, {0.3, 2.2, 3.0, 3.9}, {-1, -0.5, 5, 6}, {5, 6, 7, 8}};
 
+/// The cached J against the FEValues loop on every ramp, small and finite strain: the same sums
+/// (kTolerance above).
+template <int dim>
+void expect_cached_equals_plain(Problem<dim>& p, const Mapping<dim>& mapping, unsigned degree,
+                                fem::DomainJIntegral<dim>& cached) {
+  for (const bool finite : {false, true})
+    for (const auto& q : kRamps) {
+      const double plain = p.plain(mapping, q, finite);
+      EXPECT_NEAR(
+          cached.bulk_local(p.dof_handler, mapping, degree, stiffness<dim>(), p.u, q, finite),
+          plain, kTolerance * std::abs(plain))
+          << "finite " << finite;
+    }
+}
+
 } // namespace
 
 TEST(JIntegral, CachedEqualsPlainOnGradedQ1MeshIn2d) {
@@ -119,13 +134,7 @@ TEST(JIntegral, CachedEqualsPlainOnGradedQ1MeshIn2d) {
   const MappingQ1<2> mapping;
   p.setup(mapping);
   fem::DomainJIntegral<2> cached;
-  for (const bool finite : {false, true})
-    for (const auto& q : kRamps) {
-      const double plain = p.plain(mapping, q, finite);
-      const double fast =
-          cached.bulk_local(p.dof_handler, mapping, 1, stiffness<2>(), p.u, q, finite);
-      EXPECT_NEAR(fast, plain, kTolerance * std::abs(plain)) << "finite " << finite;
-    }
+  expect_cached_equals_plain(p, mapping, 1, cached);
   EXPECT_NE(p.plain(mapping, kRamps[0], false), 0.0); // the field has a J to compare
   // 3 column sizes x 3 row sizes: the cache shares them among the 60 cells.
   EXPECT_EQ(cached.n_shapes(), 9u);
@@ -138,24 +147,14 @@ TEST(JIntegral, CachedEqualsPlainOnQ2And3dMeshes) {
     const MappingQ1<2> mapping;
     p.setup(mapping);
     fem::DomainJIntegral<2> cached;
-    for (const bool finite : {false, true})
-      for (const auto& q : kRamps) {
-        const double plain = p.plain(mapping, q, finite);
-        EXPECT_NEAR(cached.bulk_local(p.dof_handler, mapping, 2, stiffness<2>(), p.u, q, finite),
-                    plain, kTolerance * std::abs(plain));
-      }
+    expect_cached_equals_plain(p, mapping, 2, cached);
   }
   Problem<3> p(1);
   p.make({steps(8, 0.6), steps(3, 0.4), steps(3, 0.5)});
   const MappingQ1<3> mapping;
   p.setup(mapping);
   fem::DomainJIntegral<3> cached;
-  for (const bool finite : {false, true})
-    for (const auto& q : kRamps) {
-      const double plain = p.plain(mapping, q, finite);
-      EXPECT_NEAR(cached.bulk_local(p.dof_handler, mapping, 1, stiffness<3>(), p.u, q, finite),
-                  plain, kTolerance * std::abs(plain));
-    }
+  expect_cached_equals_plain(p, mapping, 1, cached);
   EXPECT_NE(p.plain(mapping, kRamps[0], true), 0.0);
 }
 
@@ -169,12 +168,7 @@ TEST(JIntegral, CachedKeepsTheFreeFaceTermOfATaperedMesh) {
   const MappingQ1<2> mapping;
   p.setup(mapping);
   fem::DomainJIntegral<2> cached;
-  for (const bool finite : {false, true})
-    for (const auto& q : kRamps) {
-      const double plain = p.plain(mapping, q, finite);
-      EXPECT_NEAR(cached.bulk_local(p.dof_handler, mapping, 1, stiffness<2>(), p.u, q, finite),
-                  plain, kTolerance * std::abs(plain));
-    }
+  expect_cached_equals_plain(p, mapping, 1, cached);
   // The ramp whose plateau covers the mesh: only the sloping faces contribute, and they do.
   EXPECT_GT(std::abs(p.plain(mapping, kRamps[2], false)), 0.0);
   EXPECT_EQ(cached.n_shapes(), 40u);
