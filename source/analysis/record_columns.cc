@@ -3,6 +3,7 @@
 #include "record_columns.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/text_encoding.h"
 #include "fiberbridge/core/unit_parse.h"
 
 #include <algorithm>
@@ -34,16 +35,41 @@ std::string lower(std::string s) {
   return s;
 }
 
+/// The headers as decoded, numbered for the '#N' form, and the encoding they were decoded from:
+/// a map written in the right characters matches nothing when the file's code page was guessed
+/// wrong, and the garbled names alone do not say why (issue 42).
 std::string headers_found(const ExportedTable& t) {
   std::string have;
+  constexpr std::size_t max_listed = 40; // a 68 kB one-line message helps no one
+  std::size_t listed = 0;
   for (std::size_t i = 0; i < t.header().size(); ++i) {
     if (t.header()[i].empty())
       continue;
-    have += (have.empty() ? "'" : ", '") + t.header()[i] + "'";
+    if (++listed > max_listed) {
+      have += ", ...";
+      break;
+    }
+    have += (have.empty() ? "#" : ", #") + std::to_string(i + 1) + " '" +
+            message_excerpt(t.header()[i], 40) + "'";
     if (!t.units()[i].empty())
-      have += " (" + t.units()[i] + ")";
+      have += " (" + message_excerpt(t.units()[i], 20) + ")";
   }
-  return have.empty() ? "none" : have;
+  return (have.empty() ? std::string("none") : have) + "; text read as " + t.layout().encoding +
+         " (" + t.layout().encoding_how + "), Test/Encoding or --encoding overrides";
+}
+
+/// 'N' for a map entry '#N' (a column by its 1-based position); 0 when `wanted` is no such
+/// entry.
+std::size_t column_position(const std::string& wanted) {
+  if (wanted.size() < 2 || wanted[0] != '#' || wanted.size() > 8)
+    return 0;
+  std::size_t n = 0;
+  for (std::size_t i = 1; i < wanted.size(); ++i) {
+    if (!std::isdigit(static_cast<unsigned char>(wanted[i])))
+      return 0;
+    n = 10 * n + static_cast<std::size_t>(wanted[i] - '0');
+  }
+  return n;
 }
 
 /// The column whose header is `wanted`: the whole text first, then the name without the unit
@@ -52,6 +78,16 @@ std::string headers_found(const ExportedTable& t) {
 std::optional<std::size_t> match_header(const ExportedTable& t, const std::string& wanted,
                                         const std::string& ours) {
   const auto& h = t.header();
+  if (const std::size_t n = column_position(wanted)) {
+    if (n > h.size())
+      throw InputError(t.source() + ":" + std::to_string(t.layout().header_line) + ": '" +
+                       wanted + "' for " + ours + " asks for column " + std::to_string(n) +
+                       " but the rows have " + std::to_string(h.size()) +
+                       " (headers found: " + headers_found(t) + ")");
+    return n - 1;
+  }
+  if (wanted == "#0")
+    throw InputError(t.source() + ": '#0' for " + ours + ": columns count from #1");
   const std::string wanted_name = units::split_header_unit(wanted).name;
   const auto equal_name = [&](std::size_t i, bool fold) {
     const std::string name = units::split_header_unit(h[i]).name;
@@ -67,13 +103,32 @@ std::optional<std::size_t> match_header(const ExportedTable& t, const std::strin
     if (hits.size() > 1) {
       std::string names;
       for (auto i : hits)
-        names += (names.empty() ? "'" : ", '") + h[i] + "'";
+        names += (names.empty() ? "'" : ", '") + message_excerpt(h[i], 40) + "'";
       throw InputError(t.source() + ":" + std::to_string(t.layout().header_line) + ": '" + wanted +
                        "' for " + ours + " matches several headers (" + names +
                        "); give the whole header in the column map");
     }
   }
   return std::nullopt;
+}
+
+/// A column that names the specimen of each row ("Specimen", "Specimen #", "Sample", "Probe",
+/// "Probe-Nr."), when exactly one header is such a name; nullopt otherwise.
+std::optional<std::size_t> specimen_column(const ExportedTable& t) {
+  std::optional<std::size_t> found;
+  for (std::size_t i = 0; i < t.header().size(); ++i) {
+    std::string name = lower(units::split_header_unit(t.header()[i]).name);
+    while (!name.empty() && (name.back() == '#' || name.back() == '.' || name.back() == ' '))
+      name.pop_back();
+    for (const char* w : {"specimen", "specimen no", "specimen number", "sample", "sample no",
+                          "probe", "probe-nr", "probe nr", "probennummer"})
+      if (name == w) {
+        if (found)
+          return std::nullopt;
+        found = i;
+      }
+  }
+  return found;
 }
 
 struct Found {
@@ -95,14 +150,15 @@ std::optional<Found> locate(const ExportedTable& t, const RecordColumnMap& map, 
       return std::nullopt;
     throw InputError(at + ": no column '" + wanted + "' for " + c.name + " (headers found: " +
                      headers_found(t) + "); name the header that holds " + c.name +
-                     ", with or without its unit, in the column map (Test/Columns or --columns), "
-                     "e.g. '" +
-                     c.name + ": <header>'");
+                     ", with or without its unit, or its position, in the column map "
+                     "(Test/Columns or --columns), e.g. '" +
+                     c.name + ": <header>' or '" + c.name + ": #3'");
   }
   const std::string& header = t.header()[*index];
   const std::string header_unit = units::split_header_unit(header).unit;
   const std::string row_unit = t.units()[*index];
-  const std::string map_unit = mapped ? units::split_header_unit(wanted).unit : "";
+  const std::string map_unit =
+      mapped && !column_position(wanted) ? units::split_header_unit(wanted).unit : "";
   if (!header_unit.empty() && !row_unit.empty() && header_unit != row_unit)
     throw InputError(at + ": column '" + header + "' says '" + header_unit +
                      "' but the units row on line " + std::to_string(t.layout().units_line) +
@@ -136,7 +192,7 @@ std::vector<double> si(const ExportedTable& t, const Found& f, std::size_t& grou
     v[r] *= f.factor;
     if (std::isinf(v[r])) // 1e308 kN: a number, but none a machine measures
       throw InputError(t.source() + ":" + std::to_string(t.line_of_row(r)) + ": column '" +
-                       t.header()[f.index] + "' holds a value out of range");
+                       message_excerpt(t.header()[f.index]) + "' holds a value out of range");
   }
   return v;
 }
@@ -228,6 +284,13 @@ RecordColumns read_record_columns(const ExportedTable& t, const RecordReadOption
   const std::string record_header = map.header_for("record");
   if (const auto i = match_header(t, record_header, "record")) {
     r.labels = t.text(*i);
+    r.labels_header = t.header()[*i];
+  } else if (const auto s = map.file_header.count("record") ? std::nullopt : specimen_column(t)) {
+    // A machine's specimen column (a stacked export with one column naming the specimen).
+    r.labels = t.text(*s);
+    r.labels_header = t.header()[*s];
+    r.labels_from_specimen_column = true;
+    used.push_back("records split by the specimen column '" + t.header()[*s] + "'");
   } else if (map.file_header.count("record")) {
     throw InputError(t.source() + ":" + std::to_string(t.layout().header_line) + ": no column '" +
                      record_header + "' that the column map gives for record (headers found: " +

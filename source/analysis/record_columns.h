@@ -13,6 +13,10 @@ namespace fiberbridge::analysis {
 struct RecordColumns {
   std::vector<double> time, opening, load, crack, root;
   std::vector<std::string> labels; ///< the `record` column; empty without one
+  std::string labels_header;       ///< the header the labels came from
+  /// The labels came from a machine's own specimen column ("Specimen", "Sample", "Probe")
+  /// rather than our `record` column: records are named from the file ("f.csv#2").
+  bool labels_from_specimen_column = false;
   bool has_time = false, has_crack = false, has_root = false;
   /// The crack column's factor from the file's unit to m (dropout codes such as -999 are
   /// recognised in the file's own unit).

@@ -22,9 +22,13 @@ const char* const our_columns[] = {"time_s", "opening_mm",    "load_N",
 /// A column map may come from a command line as well as a scene: line ends are blanks too.
 constexpr const char* map_blanks = " \t\r\n";
 
-std::string stem(const std::string& path) {
+std::string file_name(const std::string& path) {
   const auto slash = path.find_last_of('/');
-  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::string stem(const std::string& path) {
+  std::string name = file_name(path);
   const auto dot = name.find_last_of('.');
   return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
 }
@@ -61,7 +65,7 @@ std::string RecordColumnMap::header_for(const std::string& ours) const {
 
 std::vector<TestRecord> read_test_records(const std::string& path,
                                           const RecordReadOptions& options) {
-  const ExportedTable t = ExportedTable::read(path);
+  const ExportedTable t = ExportedTable::read(path, options.encoding);
   const RecordColumns c = read_record_columns(t, options);
 
   // One record per label of the `record` column, in order of first appearance.
@@ -71,15 +75,30 @@ std::vector<TestRecord> read_test_records(const std::string& path,
     std::map<std::string, std::size_t> index;
     for (std::size_t row = 0; row < t.n_rows(); ++row) {
       if (c.labels[row].empty())
-        throw InputError(path + ":" + std::to_string(t.line_of_row(row)) +
-                         ": column 'record' is empty; expected a record label");
+        throw InputError(path + ":" + std::to_string(t.line_of_row(row)) + ": column '" +
+                         c.labels_header +
+                         "' is empty; expected a record label (the rows cannot be assigned to a "
+                         "specimen unambiguously)");
       const auto it = index.emplace(c.labels[row], names.size());
       if (it.second) {
-        names.push_back(c.labels[row]);
+        names.push_back(c.labels_from_specimen_column ? file_name(path) + "#" + c.labels[row]
+                                                      : c.labels[row]);
         rows.emplace_back();
       }
       rows[it.first->second].push_back(row);
     }
+  } else if (!t.specimen_blocks().empty()) {
+    // A stacked export: one record per specimen block, named from the file and the block's
+    // title ("DCB.csv#Specimen 2") so that records of several files stay apart.
+    for (const auto& label : t.specimen_blocks())
+      names.push_back(file_name(path) + "#" + label);
+    rows.resize(names.size());
+    for (std::size_t row = 0; row < t.n_rows(); ++row)
+      rows[t.block_of_row(row)].push_back(row);
+    for (std::size_t k = 0; k < names.size(); ++k)
+      if (rows[k].empty())
+        throw InputError(path + ": specimen block '" + t.specimen_blocks()[k] +
+                         "' holds no rows; the file cannot be split into records unambiguously");
   } else {
     names.push_back(stem(path));
     rows.emplace_back(t.n_rows());

@@ -263,7 +263,9 @@ int cmd_reduce(const std::vector<std::string>& args) {
                                                   "specimen width B in mm (required)")(
       "arm-thickness", po::value<double>(), "thickness h of one arm in mm (required)")(
       "columns", po::value<std::string>()->default_value(""),
-      "'time_s: Time (s), opening_mm: ..., load_N: ..., a_mm: ...'")(
+      "'time_s: Time (s), opening_mm: ..., load_N: ..., a_mm: ...' (or by position: '#3')")(
+      "encoding", po::value<std::string>()->default_value("auto"),
+      "text encoding of the records: auto, or CP1250, CP932, GB18030, EUC-KR, UTF-16LE, ...")(
       "smoothing-window", po::value<double>()->default_value(0), "mm; 0 = automatic")(
       "out", po::value<std::string>()->default_value("output/reduce"), "output directory");
   // R without crack readings (CBBM equivalent crack; docs/design.md section 6).
@@ -288,6 +290,8 @@ int cmd_reduce(const std::vector<std::string>& args) {
   o.specimen.height = // both arms
       vm.count("arm-thickness") ? 2 * vm["arm-thickness"].as<double>() * units::mm : NAN;
   o.read.columns = analysis::RecordColumnMap::parse(vm["columns"].as<std::string>(), "--columns");
+  if (const std::string e = vm["encoding"].as<std::string>(); e != "auto")
+    o.read.encoding = e;
   const double w = vm["smoothing-window"].as<double>();
   o.reduce.smoothing_window = w > 0 ? w * units::mm : NAN;
   const std::string crack = vm["crack-length"].as<std::string>();

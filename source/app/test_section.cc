@@ -23,6 +23,11 @@ void TestSection::declare_parameters(dealii::ParameterHandler& prm) {
                     "without its unit ('opening_mm: Extension' matches 'Extension (mm)'); the "
                     "file's unit converts it. Empty: the files use our names. The files' layout "
                     "(delimiter, decimal comma, preamble, units row) is detected.");
+  prm.declare_entry("Encoding", "auto", dealii::Patterns::Anything(),
+                    "Text encoding of the files: auto (UTF-8, UTF-16 with or without a "
+                    "byte-order mark, or the most plausible of windows-1252, windows-1250, "
+                    "Shift-JIS, GB18030 and EUC-KR, detected from the content; docs/design.md "
+                    "section 6) or an iconv name such as CP1250, CP932, GBK, EUC-KR, UTF-16LE.");
   prm.declare_entry("Crack length", "auto", dealii::Patterns::Selection("auto|measured|equivalent"),
                     "Where crack lengths come from: auto (the a_mm column when the file has one), "
                     "measured (a_mm required) or equivalent (any a_mm ignored: R against the "
@@ -49,6 +54,7 @@ void TestSection::parse_parameters(dealii::ParameterHandler& prm) {
   files = split_list(prm.get("Files"), ',');
   columns = prm.get("Columns");
   crack_length = prm.get("Crack length");
+  encoding = prm.get("Encoding");
   crack_back_tolerance = prm.get_double("Crack back tolerance") * mm;
   use_specimen_initial_crack = prm.get_bool("Use specimen initial crack");
   smoothing_window = prm.get_double("Smoothing window") * mm;
@@ -73,6 +79,7 @@ analysis::RecordReadOptions TestSection::read_options(const std::string& scene_f
   analysis::RecordReadOptions read;
   read.columns = analysis::RecordColumnMap::parse(columns, scene_file + ": Test/Columns");
   read.crack_back_tolerance = crack_back_tolerance;
+  read.encoding = encoding == "auto" ? "" : encoding;
   read.crack_length = crack_length == "measured"     ? analysis::CrackLengthSource::measured
                       : crack_length == "equivalent" ? analysis::CrackLengthSource::equivalent
                                                      : analysis::CrackLengthSource::automatic;

@@ -5,12 +5,14 @@
 
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
+#include "fiberbridge/core/text_encoding.h"
 #include "fiberbridge/core/unit_parse.h"
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -29,91 +31,11 @@ struct Line {
   std::string text;   ///< without the line end, trimmed of trailing blanks
 };
 
-bool valid_utf8(const std::string& s) {
-  for (std::size_t i = 0; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    const std::size_t n = c < 0x80         ? 1
-                          : (c >> 5) == 6  ? 2
-                          : (c >> 4) == 14 ? 3
-                          : (c >> 3) == 30 ? 4
-                                           : 0;
-    if (n == 0 || i + n > s.size())
-      return false;
-    for (std::size_t k = 1; k < n; ++k)
-      if ((static_cast<unsigned char>(s[i + k]) >> 6) != 2)
-        return false;
-    i += n;
-  }
-  return true;
-}
-
-void append_utf8(std::string& out, unsigned long code) {
-  if (code < 0x80) {
-    out += static_cast<char>(code);
-  } else if (code < 0x800) {
-    out += static_cast<char>(0xC0 | (code >> 6));
-    out += static_cast<char>(0x80 | (code & 0x3F));
-  } else if (code < 0x10000) {
-    out += static_cast<char>(0xE0 | (code >> 12));
-    out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (code & 0x3F));
-  } else {
-    out += static_cast<char>(0xF0 | (code >> 18));
-    out += static_cast<char>(0x80 | ((code >> 12) & 0x3F));
-    out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (code & 0x3F));
-  }
-}
-
-/// A line that is not UTF-8 is read as Latin-1 / Windows-1252, what German and French Windows
-/// installations of testXpert and Bluehill write ("Prüfzeit", "µm"): each byte is its code point.
-std::string latin1_to_utf8(const std::string& s) {
-  std::string out;
-  out.reserve(s.size() + 8);
-  for (char c : s)
-    append_utf8(out, static_cast<unsigned char>(c));
-  return out;
-}
-
-/// Excel's "Unicode text" export is UTF-16 with a byte-order mark.
-std::string utf16_to_utf8(const std::string& raw) {
-  const bool little = static_cast<unsigned char>(raw[0]) == 0xFF;
-  std::string out;
-  out.reserve(raw.size() / 2);
-  unsigned long high = 0;
-  for (std::size_t i = 2; i + 1 < raw.size(); i += 2) {
-    const auto a = static_cast<unsigned char>(raw[i]), b = static_cast<unsigned char>(raw[i + 1]);
-    const unsigned long unit = little ? (b << 8 | a) : (a << 8 | b);
-    if (unit >= 0xD800 && unit < 0xDC00) {
-      high = unit;
-      continue;
-    }
-    if (unit >= 0xDC00 && unit < 0xE000) {
-      if (high)
-        append_utf8(out, 0x10000 + ((high - 0xD800) << 10) + (unit - 0xDC00));
-      high = 0;
-      continue;
-    }
-    high = 0;
-    append_utf8(out, unit);
-  }
-  return out;
-}
-
-bool is_utf16(const std::string& raw) {
-  return raw.size() >= 2 && ((static_cast<unsigned char>(raw[0]) == 0xFF &&
-                              static_cast<unsigned char>(raw[1]) == 0xFE) ||
-                             (static_cast<unsigned char>(raw[0]) == 0xFE &&
-                              static_cast<unsigned char>(raw[1]) == 0xFF));
-}
-
-/// Content lines: not blank, not a '#' comment. A byte-order mark is dropped; "\r\n", "\n" and
-/// a lone "\r" (old Mac exports) all end a line. `latin1` is set when a line had to be read as
-/// Latin-1.
-std::vector<Line> content_lines(const std::string& raw, bool& latin1,
+/// Content lines of UTF-8 text: not blank, not a '#' comment. "\r\n", "\n" and a lone "\r"
+/// (old Mac exports) all end a line.
+std::vector<Line> content_lines(const std::string& raw,
                                 std::size_t max_lines = static_cast<std::size_t>(-1)) {
-  const std::string bom = "\xEF\xBB\xBF";
-  const std::size_t start = raw.compare(0, bom.size(), bom) == 0 ? bom.size() : 0;
+  const std::size_t start = 0;
   const bool cr_only = raw.find('\n') == std::string::npos;
   const char end = cr_only ? '\r' : '\n';
   std::vector<Line> lines;
@@ -124,10 +46,6 @@ std::vector<Line> content_lines(const std::string& raw, bool& latin1,
       j = raw.size();
     ++number;
     std::string t = trim_blanks(raw.substr(i, j - i), cell_blanks);
-    if (std::any_of(t.begin(), t.end(), [](char c) { return c & 0x80; }) && !valid_utf8(t)) {
-      t = latin1_to_utf8(t);
-      latin1 = true;
-    }
     if (!t.empty() && t[0] != '#')
       lines.push_back({number, std::move(t)});
     i = j + 1;
@@ -301,6 +219,67 @@ Detected detect(const std::vector<Line>& lines, const std::string& raw, const st
                             "least two numbers)");
 }
 
+/// Lines between two blocks of one export (a block title, a time stamp, a blank): at most this
+/// many before the header repeats, else they are no block break.
+constexpr std::size_t max_block_break_lines = 12;
+
+/// "Specimen 2" for a line that titles a specimen's block (Bluehill "Specimen 2", "Sample: 3",
+/// testXpert "Probe 2" / "Prüfkörper 2"); "" for any other line.
+std::string specimen_label(const std::vector<std::string>& cells) {
+  std::string text;
+  for (const auto& c : cells)
+    if (!c.empty())
+      text += (text.empty() ? "" : " ") + c;
+  std::string low;
+  for (char c : text)
+    low += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* word : {"specimen", "sample", "probe", "pr\xC3\xBC" "fk\xC3\xB6rper"}) {
+    const std::string w = word;
+    if (low.rfind(w, 0) != 0 || text.size() > 60)
+      continue;
+    // The word, an optional '#', ':' or '-', then an identifier.
+    std::string rest = text.substr(w.size());
+    while (!rest.empty() && (rest[0] == ' ' || rest[0] == ':' || rest[0] == '#' || rest[0] == '-'))
+      rest.erase(0, 1);
+    if (rest.empty() || rest.find(' ') != std::string::npos)
+      return "";
+    return text.substr(0, w.size()) + " " + rest;
+  }
+  return "";
+}
+
+/// A NUL or other control byte in decoded text is no character a testing machine writes: it is
+/// a damaged file (a NUL-filled tail from a crash while writing, binary garbage, UTF-16 that lost
+/// a byte). Its rows cannot be read, and they must not pass as "results after the data" (issue
+/// 42: a tail set aside that way silently shortened the record), so the file is refused with the
+/// extent of the damage. Tab, line ends, form feed and a final Ctrl-Z (DOS end of file) are text.
+void refuse_damaged_text(const std::string& text, const std::string& source) {
+  std::size_t first = std::string::npos, count = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto b = static_cast<unsigned char>(text[i]);
+    const bool control = (b < 0x20 && b != '\t' && b != '\n' && b != '\r' && b != '\f') ||
+                         b == 0x7F;
+    if (!control || (b == 0x1A && i + 1 == text.size()))
+      continue;
+    if (first == std::string::npos)
+      first = i;
+    ++count;
+  }
+  if (first == std::string::npos)
+    return;
+  const auto line_of = [&](std::size_t at) {
+    return 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + at, '\n'));
+  };
+  const std::size_t total = line_of(text.size());
+  char byte[8];
+  std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(text[first]));
+  throw InputError(source + ":" + std::to_string(line_of(first)) + ": the file is damaged: " +
+                   std::to_string(count) + " NUL or control byte(s) (the first " + byte +
+                   ") from this line on, of " + std::to_string(total) +
+                   " line(s); the rows there cannot be read and are not dropped silently. "
+                   "Re-export the file, or cut it before this line if the rows above suffice");
+}
+
 std::string lower(std::string s) {
   for (auto& c : s)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -384,16 +363,16 @@ bool parse_exported_number(const std::string& cell, char decimal, double& value,
 
 bool TableLayout::is_export() const {
   return delimiter != ',' || decimal != '.' || units_line != 0 || preamble_lines != 0 ||
-         std::string(encoding) != "UTF-8" || repeated_headers != 0 || short_rows != 0 ||
-         trailer_lines != 0;
+         encoding != "UTF-8" || repeated_headers != 0 || short_rows != 0 ||
+         trailer_lines != 0 || continued_blocks != 0 || specimen_blocks != 0;
 }
 
 std::string TableLayout::describe() const {
   std::ostringstream s;
   s << "Read as " << delimiter_name(delimiter) << "-separated with a decimal "
     << (decimal == ',' ? "comma" : "point");
-  if (std::string(encoding) != "UTF-8")
-    s << " (text in " << encoding << ")";
+  if (encoding != "UTF-8" || encoding_how != "detected")
+    s << " (text in " << encoding << ", " << encoding_how << ")";
   if (preamble_lines)
     s << "; " << preamble_lines << " preamble line(s) above the header on line " << header_line
       << " skipped";
@@ -407,37 +386,47 @@ std::string TableLayout::describe() const {
   if (trailer_lines)
     s << "; " << trailer_lines << " line(s) after the data from line " << trailer_line
       << " (results or notes, not rows) set aside";
+  if (continued_blocks)
+    s << "; " << continued_blocks + 1 << " data blocks (" << continued_blocks
+      << " new block(s) with the same header inside the data) read as one record";
+  if (specimen_blocks)
+    s << "; " << specimen_blocks << " specimen blocks, one record each";
   if (short_rows)
     s << "; " << short_rows << " row(s) with fewer cells than the header (missing cells empty)";
   s << ".";
   return s.str();
 }
 
-TableLayout detect_table_layout(const std::string& raw, const std::string& source) {
-  const std::string text = is_utf16(raw) ? utf16_to_utf8(raw) : raw;
-  bool latin1 = false;
+TableLayout detect_table_layout(const std::string& raw, const std::string& source,
+                                const std::string& encoding) {
+  DecodedText decoded = decode_text(raw, encoding, source);
+  refuse_damaged_text(decoded.utf8, source);
+  const std::string& text = decoded.utf8;
   // Only the lines detection can look at: its cost does not grow with the record.
-  auto layout =
-      detect(content_lines(text, latin1, max_detection_lines + data_run), text, source).layout;
-  layout.encoding = is_utf16(raw) ? "UTF-16" : latin1 ? "Latin-1" : "UTF-8";
+  auto layout = detect(content_lines(text, max_detection_lines + data_run), text, source).layout;
+  layout.encoding = decoded.encoding;
+  layout.encoding_how = decoded.how;
   return layout;
 }
 
-ExportedTable ExportedTable::read(const std::string& path) {
+ExportedTable ExportedTable::read(const std::string& path, const std::string& encoding) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw InputError(path + ": cannot open file for reading");
   std::stringstream buffer;
   buffer << in.rdbuf();
-  return parse(buffer.str(), path);
+  return parse(buffer.str(), path, encoding);
 }
 
-ExportedTable ExportedTable::parse(const std::string& raw, const std::string& source_name) {
-  const std::string text = is_utf16(raw) ? utf16_to_utf8(raw) : raw;
-  bool latin1 = false;
-  const std::vector<Line> lines = content_lines(text, latin1);
+ExportedTable ExportedTable::parse(const std::string& raw, const std::string& source_name,
+                                   const std::string& encoding) {
+  DecodedText decoded = decode_text(raw, encoding, source_name);
+  refuse_damaged_text(decoded.utf8, source_name);
+  const std::string& text = decoded.utf8;
+  const std::vector<Line> lines = content_lines(text);
   Detected d = detect(lines, text, source_name);
-  d.layout.encoding = is_utf16(raw) ? "UTF-16" : latin1 ? "Latin-1" : "UTF-8";
+  d.layout.encoding = decoded.encoding;
+  d.layout.encoding_how = decoded.how;
   ExportedTable t;
   t.source_ = source_name;
   t.layout_ = d.layout;
@@ -475,22 +464,74 @@ ExportedTable ExportedTable::parse(const std::string& raw, const std::string& so
     t.layout_.trailer_lines = lines.size() - end;
     t.layout_.trailer_line = lines[end].number;
   }
+  const auto is_header = [&](const std::vector<std::string>& c) {
+    return c == raw_header || (!raw_units.empty() && c == raw_units) ||
+           (d.layout.delimiter == ' ' && join_bracketed_units(c) == raw_header);
+  };
+  // The first block's specimen label stands in the preamble ("Specimen 1" above the header).
+  t.block_labels_.push_back("");
+  for (std::size_t k = 0; k < d.first_data; ++k)
+    if (cells::split(lines[k].text, d.layout.delimiter, cells) && !specimen_label(cells).empty())
+      t.block_labels_[0] = specimen_label(cells);
+  bool specimen_blocks = !t.block_labels_[0].empty();
+  std::size_t block = 0;
   for (std::size_t i = d.first_data; i < end; ++i) {
     const std::string at = source_name + ":" + std::to_string(lines[i].number);
     if (!cells::split(lines[i].text, d.layout.delimiter, cells))
       throw InputError(at + ": a quoted cell has no closing quote or text follows it (quoted "
                             "cells must end on their line)");
-    if (cells == raw_header || (!raw_units.empty() && cells == raw_units) ||
-        (d.layout.delimiter == ' ' && join_bracketed_units(cells) == raw_header)) {
+    if (is_header(cells)) {
       ++t.layout_.repeated_headers;
       continue;
+    }
+    // A block break: lines that are not data ("Data Acquisition", "Specimen 2", a time stamp)
+    // followed by the header again. MTS 793 MPT writes one block per data acquisition of the
+    // same test (continued); Bluehill and testXpert one per specimen (new records).
+    if (!is_data(cells, d.layout.decimal)) {
+      std::size_t k = i;
+      std::string label;
+      std::vector<std::string> c2;
+      for (; k < end && k < i + max_block_break_lines; ++k) {
+        cells::split(lines[k].text, d.layout.delimiter, c2);
+        if (is_header(c2) || is_data(c2, d.layout.decimal))
+          break;
+        if (label.empty())
+          label = specimen_label(c2);
+      }
+      if (k < end && k > i && is_header(c2)) {
+        if (!label.empty()) {
+          specimen_blocks = true;
+          t.block_labels_.push_back(label);
+          ++block;
+        } else {
+          ++t.layout_.continued_blocks;
+        }
+        i = k - 1;
+        continue;
+      }
+      // Not a block break. A row with text cells and the wrong width is no row of this table
+      // (a row of the right width goes on: its cells are named when read as numbers).
+      while (cells.size() > n && cells.back().empty())
+        cells.pop_back();
+      const bool text = std::any_of(cells.begin(), cells.end(), [&](const std::string& c) {
+        return kind_of(c, d.layout.decimal) == CellKind::text;
+      });
+      if (text && cells.size() != n)
+        throw InputError(at + ": '" + message_excerpt(lines[i].text) +
+                         "' is not a row of the table whose header is on line " +
+                         std::to_string(d.layout.header_line) + " (" +
+                         std::to_string(cells.size()) + " cells, expected " + std::to_string(n) +
+                         "): a new block with another header, a second table, or a damaged "
+                         "line; the file cannot be read or split unambiguously");
     }
     while (cells.size() > n && cells.back().empty())
       cells.pop_back();
     if (cells.size() > n)
       throw InputError(at + ": " + std::to_string(cells.size()) +
                        " cells, but the header on line " + std::to_string(d.layout.header_line) +
-                       " and the rows above have " + std::to_string(n));
+                       " and the rows above have " + std::to_string(n) +
+                       " (a new block with another header, or a damaged line: '" +
+                       message_excerpt(lines[i].text) + "')");
     if (cells.size() < n) {
       ++t.layout_.short_rows;
       cells.resize(n);
@@ -498,6 +539,22 @@ ExportedTable ExportedTable::parse(const std::string& raw, const std::string& so
     for (std::size_t c = 0; c < n; ++c)
       t.columns_[c].push_back(std::move(cells[c]));
     t.line_numbers_.push_back(lines[i].number);
+    t.block_of_row_.push_back(block);
+  }
+  if (!specimen_blocks) {
+    t.block_labels_.clear();
+    t.block_of_row_.clear();
+  } else {
+    for (std::size_t b = 0; b < t.block_labels_.size(); ++b) {
+      if (t.block_labels_[b].empty())
+        t.block_labels_[b] = "Specimen " + std::to_string(b + 1);
+      for (std::size_t c = 0; c < b; ++c)
+        if (t.block_labels_[c] == t.block_labels_[b])
+          throw InputError(source_name + ": two specimen blocks are labelled '" +
+                           message_excerpt(t.block_labels_[b]) +
+                           "': the file cannot be split into records unambiguously");
+    }
+    t.layout_.specimen_blocks = t.block_labels_.size();
   }
   return t;
 }
@@ -514,7 +571,7 @@ std::vector<double> ExportedTable::numeric(std::size_t column, std::size_t* grou
     }
     if (!is_missing_value(cells[r]))
       throw InputError(source_ + ":" + std::to_string(line_numbers_[r]) + ": column '" +
-                       header_[column] + "' holds '" + cells[r] + "', expected a number (decimal " +
+                       message_excerpt(header_[column]) + "' holds '" + message_excerpt(cells[r]) + "', expected a number (decimal " +
                        (layout_.decimal == ',' ? "comma" : "point") + ") or an empty cell");
     values[r] = NAN;
   }

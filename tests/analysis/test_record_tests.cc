@@ -101,8 +101,8 @@ TEST(TestRecordReader, MachineHeadersThroughTheColumnMap) {
   EXPECT_DOUBLE_EQ(r.opening[5], 2.5 * mm);
   // Without the map the reader names the header it looked for and the columns it found.
   const std::string m = message_of(f.path());
-  EXPECT_TRUE(contains(m, ":1: no column 'opening_mm' for opening_mm (headers found: 'Time (s)', "
-                          "'Extension (mm)'"))
+  EXPECT_TRUE(contains(m, ":1: no column 'opening_mm' for opening_mm (headers found: #1 'Time "
+                          "(s)', #2 'Extension (mm)'"))
       << m;
   // It lists what it found and proposes no header of its own choosing (it used to suggest
   // 'opening_mm: Time (s)', the first header, which is wrong).
@@ -220,8 +220,8 @@ TEST(TestRecordReader, MissingColumn) {
   RecordReadOptions o;
   o.crack_length = CrackLengthSource::measured;
   const std::string m = message_of(f.path(), o);
-  EXPECT_TRUE(contains(m, "cols.csv:1: no column 'a_mm' for a_mm (headers found: 'time_s', "
-                          "'opening_mm', 'load_N')"))
+  EXPECT_TRUE(contains(m, "cols.csv:1: no column 'a_mm' for a_mm (headers found: #1 'time_s', "
+                          "#2 'opening_mm', #3 'load_N'; text read as UTF-8 (detected)"))
       << m;
   TempFile g("noload.csv", "time_s,opening_mm,a_mm\n0,0,30\n1,1,31\n");
   const std::string n = message_of(g.path());

@@ -29,7 +29,8 @@ struct TestRecord {
 /// Which header of the file holds each of our columns. Our names are time_s, opening_mm, load_N
 /// (required but time_s), a_mm, delta_root_mm and record (optional); the units are in our names.
 /// Without an entry a column is looked up under our own name. An entry names the file's header
-/// with or without its unit ('opening_mm: Extension' matches a header 'Extension (mm)' or
+/// with or without its unit, or by its position ('load_N: #3', the third column, 1-based, for
+/// headers no one can type) ('opening_mm: Extension' matches a header 'Extension (mm)' or
 /// 'Extension' over a units row '(mm)'); the file's unit then converts it (kN, lbf, in, ms, ...),
 /// else the entry's unit, else the unit in our name.
 struct RecordColumnMap {
@@ -54,6 +55,10 @@ enum class CrackLengthSource {
 /// How the reader cleans what a real machine writes (docs/design.md section 6).
 struct RecordReadOptions {
   RecordColumnMap columns;
+  /// The files' text encoding: "" (or "auto") detects it from the content, else an iconv name
+  /// (CP1250, CP932, GB18030, EUC-KR, UTF-16LE, ...; core/text_encoding.h). Test/Encoding,
+  /// --encoding.
+  std::string encoding;
   CrackLengthSource crack_length = CrackLengthSource::automatic;
   /// A negative opening or load within this fraction of the channel's largest value is reading
   /// noise around zero (an extensometer zeroed 0.0002 mm off on a record reaching several mm)

@@ -13,6 +13,7 @@ namespace fiberbridge::app {
 struct TestSection {
   std::vector<std::string> files; ///< as written in the scene (trimmed, empty entries dropped)
   std::string columns;            ///< the column map as written (read_options parses it)
+  std::string encoding = "auto";  ///< the files' text encoding: auto or an iconv name
   /// "auto" (the crack column when there is one), "measured" (required) or "equivalent" (any
   /// crack column ignored: R against the compliance's equivalent crack length)
   std::string crack_length = "auto";

@@ -14,9 +14,16 @@
 //  - quoted cells ("" inside is one quote), '#' comment lines, blank lines, a UTF-8 byte-order
 //    mark, CRLF or CR line ends; the header or units row repeated inside the data (MTS writes one
 //    per buffer) skipped; rows shorter than the header read as empty trailing cells;
+//  - blocks: non-data lines inside the data followed by the header again start a block; a block
+//    titled as a specimen ("Specimen 2", "Sample 3", "Probe 2") is another specimen (stacked
+//    exports: Bluehill, testXpert series), any other ("Data Acquisition" of MTS 793 MPT)
+//    continues the table; a block whose header differs is refused (the split is ambiguous);
 //  - lines after the last data row that are not data (appended results) set aside;
-//  - the text encoding: UTF-8, UTF-16 with a byte-order mark, or Latin-1 / Windows-1252 lines
-//    (German and French Windows exports), all read as UTF-8.
+//  - the text encoding (core/text_encoding.h): UTF-8, UTF-16 with or without a byte-order mark,
+//    or a Windows / legacy code page (windows-1252, windows-1250, Shift-JIS, GB18030, EUC-KR)
+//    detected from the content or given by the user, all converted to UTF-8 with iconv;
+//  - a damaged file (NUL or control bytes: a NUL-filled or binary tail) refused, never read up
+//    to the damage with the rest set aside.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -35,9 +42,16 @@ struct TableLayout {
   std::size_t trailer_lines = 0;    ///< non-data lines after the last data row (set aside)
   std::size_t trailer_line = 0;     ///< the first of them
   std::size_t short_rows = 0;       ///< rows with fewer cells than the header (padded empty)
-  /// "UTF-8"; "UTF-16" (a byte-order mark: Excel's Unicode text) or "Latin-1" (lines that are
-  /// not UTF-8, read as Latin-1 / Windows-1252) when converted to UTF-8 for reading
-  const char* encoding = "UTF-8";
+  /// Blocks after the first that continue the same table (MTS 793 MPT "Data Acquisition":
+  /// non-data lines, then the header again)
+  std::size_t continued_blocks = 0;
+  /// Specimen blocks ("Specimen 2" above a repeated header: Bluehill, testXpert series); 0 when
+  /// the file holds one specimen
+  std::size_t specimen_blocks = 0;
+  /// The text encoding the file was read in ("UTF-8", "UTF-16LE", "windows-1250",
+  /// "Shift-JIS (CP932)", ...; core/text_encoding.h), converted to UTF-8 for reading
+  std::string encoding = "UTF-8";
+  std::string encoding_how = "detected"; ///< "byte-order mark", "given", "detected: ..."
 
   /// False for what our own files are: comma-separated, decimal point, header on the first
   /// content line, no units row, nothing repeated or short.
@@ -49,14 +63,18 @@ struct TableLayout {
 
 /// Detects the layout of `text` (see the file comment); throws InputError naming `source` when
 /// no block of numeric rows with a header above it is found.
-TableLayout detect_table_layout(const std::string& text, const std::string& source);
+/// `encoding`: "" or "auto" detects it, else an iconv name (core/text_encoding.h).
+TableLayout detect_table_layout(const std::string& text, const std::string& source,
+                                const std::string& encoding = "");
 
 class ExportedTable {
 public:
   /// Reads `path`; throws InputError naming file and line for what cannot be read.
-  static ExportedTable read(const std::string& path);
-  /// Parses text as if it came from `source_name` (tests, fuzzing, read()).
-  static ExportedTable parse(const std::string& text, const std::string& source_name);
+  /// `encoding`: "" or "auto" detects it, else an iconv name (core/text_encoding.h).
+  static ExportedTable read(const std::string& path, const std::string& encoding = "");
+  /// Parses the file's bytes as if they came from `source_name` (tests, fuzzing, read()).
+  static ExportedTable parse(const std::string& raw, const std::string& source_name,
+                             const std::string& encoding = "");
 
   const TableLayout& layout() const { return layout_; }
   const std::string& source() const { return source_; }
@@ -66,6 +84,10 @@ public:
   const std::vector<std::string>& units() const { return units_; }
   std::size_t n_rows() const { return line_numbers_.size(); }
   std::size_t line_of_row(std::size_t row) const { return line_numbers_.at(row); }
+  /// Specimen blocks of a stacked export ("Specimen 1", "Specimen 2", ...); empty when the file
+  /// holds one specimen. block_of_row(r) is the index of row r's block.
+  const std::vector<std::string>& specimen_blocks() const { return block_labels_; }
+  std::size_t block_of_row(std::size_t row) const { return block_of_row_.at(row); }
   /// Raw text of a column's cells.
   const std::vector<std::string>& text(std::size_t column) const { return columns_.at(column); }
   /// Numbers of a column in the detected decimal convention. A missing value (empty cell, NaN,
@@ -79,6 +101,8 @@ private:
   std::vector<std::string> header_, units_;
   std::vector<std::vector<std::string>> columns_;
   std::vector<std::size_t> line_numbers_;
+  std::vector<std::string> block_labels_;
+  std::vector<std::size_t> block_of_row_;
 };
 
 /// Parses one number written with decimal separator `decimal` ('.' or ','), allowing thousands
