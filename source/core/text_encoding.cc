@@ -122,6 +122,9 @@ double plausibility(const std::string& utf8, const std::string& encoding) {
         score -= 3; // C1 controls: no code page writes them for text
       } else if (c >= 0xA0 && c <= 0xBF) {
         score -= 2; // '¹', '¿', '¤', '¦', ... where another code page has letters
+      } else if (c >= 0x3000 && ascii_letter(before) && ascii_letter(after)) {
+        score -= 2; // an ideograph inside a Latin word: a Latin letter's byte and the next
+                    // letter read as one double-byte character ("Déplacement" as Shift-JIS)
       } else if (c >= 0x3040 && c <= 0x30FF) {
         score += 4; // hiragana, katakana
       } else if (c >= 0xAC00 && c <= 0xD7A3) {

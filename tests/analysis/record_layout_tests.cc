@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <iconv.h>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -132,6 +134,86 @@ std::string spreadsheet(const Raw& r) {
   return s;
 }
 
+/// `utf8` in code page `encoding`, as a program on a Windows with that code page writes it
+/// (glibc's iconv; every character of our texts exists in the code pages used).
+std::string encoded(const std::string& utf8, const char* encoding) {
+  iconv_t cd = iconv_open(encoding, "UTF-8");
+  if (cd == reinterpret_cast<iconv_t>(-1))
+    throw std::runtime_error(std::string("iconv has no ") + encoding);
+  std::string out(4 * utf8.size() + 16, '\0');
+  char* in = const_cast<char*>(utf8.data());
+  std::size_t in_left = utf8.size(), out_left = out.size();
+  char* o = out.data();
+  const std::size_t r = iconv(cd, &in, &in_left, &o, &out_left);
+  iconv_close(cd);
+  if (r == static_cast<std::size_t>(-1))
+    throw std::runtime_error(std::string("not representable in ") + encoding);
+  out.resize(out.size() - out_left);
+  return out;
+}
+
+/// Bluehill on a Polish Windows: the Bluehill layout with Polish headers, in windows-1250
+/// ("Obciążenie": ą and ż are 0xB9 and 0xBF, which windows-1252 reads as '¹' and '¿').
+std::string bluehill_cp1250(const Raw& r) {
+  std::string s = "Dane tekstowe : Etykieta próbki,\"DCB-01\"\r\nOgólne : Data rozpoczęcia,"
+                  "13.11.2018 17:14\r\n\r\n\"Czas\",\"Wydłużenie\",\"Obciążenie\",\"Długość "
+                  "pęknięcia\"\r\n\"(s)\",\"(mm)\",\"(N)\",\"(mm)\"\r\n";
+  for (std::size_t i = 0; i < r.t.size(); ++i)
+    s += "\"" + fmt(r.t[i]) + "\",\"" + fmt(r.x[i]) + "\",\"" + fmt(r.P[i]) + "\",\"" +
+         fmt(r.a[i]) + "\"\r\n";
+  return encoded(s, "CP1250");
+}
+
+/// Shimadzu Trapezium in Japanese: a quoted CSV with a title block, Japanese headers and a
+/// units row, in Shift-JIS (CP932, what Japanese Windows writes).
+std::string trapezium_sjis(const Raw& r) {
+  std::string s = "\"試験名\",\"DCB-01\"\r\n\"試験日\",\"2018/11/13\"\r\n\r\n"
+                  "\"時間\",\"ストローク\",\"試験力\",\"き裂長さ\"\r\n\"sec\",\"mm\",\"N\","
+                  "\"mm\"\r\n";
+  for (std::size_t i = 0; i < r.t.size(); ++i)
+    s += fmt(r.t[i]) + "," + fmt(r.x[i]) + "," + fmt(r.P[i]) + "," + fmt(r.a[i]) + "\r\n";
+  return encoded(s, "CP932");
+}
+
+/// MTS 793 MPT specimen.dat with two Data Acquisition blocks (normal for MPT: one per
+/// acquisition process of the procedure), each with its title, a time stamp and the header.
+std::string mpt_two_blocks(const Raw& r) {
+  const std::string head =
+      "Time      Crosshead   Load     Crack\n(s)       (m)         (N)      (mm)\n";
+  std::string s = "MTS793|MPT|ENU|1|0|.|/|:|1|0|0|A\nData Acquisition\n"
+                  "Time: 0 Sec 13.11.2018 17:14:02\n" +
+                  head;
+  for (std::size_t i = 0; i < r.t.size(); ++i) {
+    if (i == r.t.size() / 3)
+      s += "\nData Acquisition\nTime: " + fmt(r.t[i]) + " Sec 13.11.2018 17:20:11\n" + head;
+    s += fmt(r.t[i]) + "   " + fmt(r.x[i] * 1e-3) + "   " + fmt(r.P[i]) + "  " + fmt(r.a[i]) + "\n";
+  }
+  return s;
+}
+
+/// Bluehill's per-specimen blocks: "Specimen 1" over its header and rows, then "Specimen 2"
+/// (here the same rows again, as a second specimen). The first record reads as the plain file.
+std::string bluehill_stacked(const Raw& r) {
+  std::string s = "\"Sample ID\",\"DCB series\"\r\n";
+  for (int specimen = 1; specimen <= 2; ++specimen) {
+    s += "\r\n\"Specimen " + std::to_string(specimen) +
+         "\"\r\n\"Time\",\"Extension\",\"Load\",\"Crack length\"\r\n\"(s)\",\"(mm)\",\"(N)\","
+         "\"(mm)\"\r\n";
+    for (std::size_t i = 0; i < r.t.size(); ++i)
+      s += "\"" + fmt(r.t[i]) + "\",\"" + fmt(r.x[i]) + "\",\"" + fmt(r.P[i]) + "\",\"" +
+           fmt(r.a[i]) + "\"\r\n";
+  }
+  return s;
+}
+
+/// Bluehill 3 "Unicode" export without a byte-order mark: UTF-16LE, tab-separated.
+std::string utf16_without_bom(const Raw& r) {
+  std::string s = "Time (s)\tExtension (mm)\tLoad (N)\tCrack length (mm)\r\n";
+  for (std::size_t i = 0; i < r.t.size(); ++i)
+    s += fmt(r.t[i]) + "\t" + fmt(r.x[i]) + "\t" + fmt(r.P[i]) + "\t" + fmt(r.a[i]) + "\r\n";
+  return encoded(s, "UTF-16LE");
+}
+
 const Layout layouts[] = {
     {"bluehill", "time_s: Time, opening_mm: Extension, load_N: Load, a_mm: Crack length", bluehill},
     {"testxpert",
@@ -140,7 +222,20 @@ const Layout layouts[] = {
     {"tabbed", "time_s: Time, opening_mm: Extension, load_N: Load, a_mm: Crack", tabbed},
     {"mts", "time_s: Time, opening_mm: Crosshead, load_N: Load, a_mm: Crack", mts},
     {"spreadsheet", "time_s: Time, opening_mm: Extension, load_N: Load, a_mm: Crack length",
-     spreadsheet}};
+     spreadsheet},
+    {"bluehill_cp1250",
+     "time_s: Czas, opening_mm: Wydłużenie, load_N: Obciążenie, a_mm: Długość pęknięcia",
+     bluehill_cp1250},
+    {"trapezium_sjis", "time_s: 時間, opening_mm: ストローク, load_N: 試験力, a_mm: き裂長さ",
+     trapezium_sjis},
+    {"trapezium_sjis_by_position", "time_s: #1, opening_mm: #2, load_N: #3, a_mm: #4",
+     trapezium_sjis},
+    {"mpt_two_blocks", "time_s: Time, opening_mm: Crosshead, load_N: Load, a_mm: Crack",
+     mpt_two_blocks},
+    {"bluehill_stacked", "time_s: Time, opening_mm: Extension, load_N: Load, a_mm: Crack length",
+     bluehill_stacked},
+    {"utf16_without_bom", "time_s: Time, opening_mm: Extension, load_N: Load, a_mm: Crack length",
+     utf16_without_bom}};
 
 RecordReadOptions with_map(const std::string& map) {
   RecordReadOptions o;
