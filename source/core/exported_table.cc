@@ -494,11 +494,13 @@ ExportedTable ExportedTable::parse(const std::string& raw, const std::string& so
       for (; k < end && k < i + max_block_break_lines; ++k) {
         cells::split(lines[k].text, d.layout.delimiter, c2);
         if (is_header(c2) || is_data(c2, d.layout.decimal))
-          break;
+          break; // a units row alone is no break: the block's own header stood above it
         if (label.empty())
           label = specimen_label(c2);
       }
-      if (k < end && k > i && is_header(c2)) {
+      const bool same_names =
+          c2 == raw_header || (d.layout.delimiter == ' ' && join_bracketed_units(c2) == raw_header);
+      if (k < end && k > i && same_names) {
         if (!label.empty()) {
           specimen_blocks = true;
           t.block_labels_.push_back(label);

@@ -573,3 +573,72 @@ TEST(RecordLayouts, ClockTimesAndATrailer) {
     ASSERT_NEAR(r.time[i], plain.time[i] - plain.time[0], 1e-3) << "row " << i;
   expect_same(r.load, plain.load, 1e-7, "load");
 }
+
+// Stacked specimens become one record each, named from the file: Bluehill's per-specimen blocks
+// and a machine's `Specimen` column. Two blocks with one title, and a block whose header differs
+// (an MPT block with other channels), cannot be split unambiguously and are refused with why.
+TEST(RecordLayouts, StackedSpecimensAreSplit) {
+  const Raw raw = raw_record();
+  const TestRecord plain = read_test_records(shared, with_map(shared_map)).at(0);
+  TempFile f("stacked.csv", bluehill_stacked(raw));
+  const auto records = read_test_records(f.path(), with_map(layouts[0].map));
+  ASSERT_EQ(records.size(), 2u);
+  const std::string file = f.path().substr(f.path().find_last_of('/') + 1);
+  EXPECT_EQ(records[0].name, file + "#Specimen 1");
+  EXPECT_EQ(records[1].name, file + "#Specimen 2");
+  expect_same(records[1].load, plain.load, 1e-7, "load");
+
+  std::string column = "Specimen,Time (s),Extension (mm),Load (N),Crack length (mm)\n";
+  for (const char* specimen : {"A-1", "A-2"})
+    for (std::size_t i = 0; i < raw.t.size(); ++i)
+      column += std::string(specimen) + "," + fmt(raw.t[i]) + "," + fmt(raw.x[i]) + "," +
+                fmt(raw.P[i]) + "," + fmt(raw.a[i]) + "\n";
+  TempFile g("column.csv", column);
+  const auto by_column = read_test_records(g.path(), with_map(layouts[0].map));
+  ASSERT_EQ(by_column.size(), 2u);
+  const std::string gfile = g.path().substr(g.path().find_last_of('/') + 1);
+  EXPECT_EQ(by_column[0].name, gfile + "#A-1");
+  EXPECT_EQ(by_column[1].name, gfile + "#A-2");
+  expect_same(by_column[1].opening, plain.opening, 1e-7, "opening");
+
+  const auto refusal = [](const std::string& path, const std::string& map) {
+    try {
+      read_test_records(path, with_map(map));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  std::string twice = bluehill_stacked(raw);
+  twice.replace(twice.find("Specimen 2"), 10, "Specimen 1");
+  TempFile h("twice.csv", twice);
+  const std::string m = refusal(h.path(), layouts[0].map);
+  EXPECT_TRUE(contains(m, "two specimen blocks are labelled 'Specimen 1'")) << m;
+
+  // MPT's second block records seven channels: not the table above, refused at its title.
+  std::string other = mpt_two_blocks(raw);
+  const std::size_t second = other.find("Data Acquisition", other.find("Data Acquisition") + 1);
+  const std::size_t header = other.find("Time      Crosshead", second);
+  other.replace(header, other.find('\n', header) - header,
+                "Time Crosshead Load Crack Strain1 Strain2 Temperature");
+  TempFile k("mpt_other.dat", other);
+  const std::string n = refusal(k.path(), layouts[3].map);
+  EXPECT_TRUE(contains(n, "'Data Acquisition' is not a row of the table whose header is on line 4"))
+      << n;
+  EXPECT_TRUE(contains(n, "split unambiguously")) << n;
+}
+
+// Columns by position, for headers no one can type: '#N' is the N-th column (1-based); beyond the
+// last column the message lists the headers found with their numbers.
+TEST(RecordLayouts, ColumnsByPosition) {
+  const Raw raw = raw_record();
+  TempFile f("sjis.csv", trapezium_sjis(raw));
+  try {
+    read_test_records(f.path(), with_map("time_s: #1, opening_mm: #2, load_N: #9, a_mm: #4"));
+    FAIL() << "#9 of four columns was accepted";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(contains(e.what(), "'#9' for load_N asks for column 9 but the rows have 4")) << e.what();
+    EXPECT_TRUE(contains(e.what(), "#3 '試験力' (N)")) << e.what();
+    EXPECT_TRUE(contains(e.what(), "Shift-JIS (CP932)")) << e.what();
+  }
+}
