@@ -498,7 +498,7 @@ private:
       largest = std::max(largest, x);
       lowest = std::min(lowest, x);
     }
-    const double noise = o_.noise_fraction * largest;
+    double noise = o_.noise_fraction * largest;
     double x0 = NAN;
     if (m >= 5) {
       const double slope = (m * sxy - sx * sy) / (m * sxx - sx * sx);
@@ -507,13 +507,19 @@ private:
     }
     // A small offset is removed only when it explains the negative openings: all of them,
     // beyond the toe, come back within noise (a negative block mid-test is no zero offset).
+    // The band is a fraction of the largest opening measured from the zero: after a shift, of
+    // the shifted openings (an absolute crosshead column at 112 mm would otherwise widen it
+    // tenfold and pass real negatives as noise; issue 42).
+    const double shifted_noise = std::isfinite(x0) ? o_.noise_fraction * (largest - x0) : noise;
     bool explains = lowest < -noise && std::isfinite(x0);
     for (std::size_t i = first_fit; explains && i < n; ++i)
-      explains = r.opening[i] - x0 >= -noise;
+      explains = r.opening[i] - x0 >= -shifted_noise;
     const bool shift = std::isfinite(x0) && (std::abs(x0) > offset_fraction * top || explains);
     if (shift) {
       for (double& x : r.opening)
         x -= x0;
+      largest -= x0;
+      noise = shifted_noise;
       say("Opening zero offset " + num(x0 / mm) +
           " mm found by extrapolating the initial linear part of the load against the opening (" +
           std::to_string(m) + " rows between " + num(linear_low) + " and " + num(linear_high) +

@@ -448,6 +448,8 @@ ReducedRecord reduce_record(const TestRecord& rec, const specimen::Specimen& sp,
     red.l1 = s.l1;
     red.l2 = s.l2;
     out.initiation = initiation_values(rec, red);
+    if (!out.initiation.vis.note.empty())
+      out.notes.push_back(out.initiation.vis.note);
   }
 
   out.energy = summarize(out.da, out.R_energy, o.plateau_fraction);

@@ -313,6 +313,9 @@ int cmd_reduce(const std::vector<std::string>& args) {
   o.reduce.energy_crack = vm["energy-crack"].as<std::string>();
   const auto r = app::run_reduce(o, out, summary);
   app::write_run_summary(out, summary);
+  for (const auto& x : r.reduced) // what makes a value uncertain is said where it is read
+    if (!x.initiation.vis.note.empty())
+      std::cout << "note: " << x.name << ": " << x.initiation.vis.note << "\n";
   std::cout << r.reduced.size() << " record(s); mean plateau R: energy " << r.mean.energy.plateau
             << ", MBT " << r.mean.mbt.plateau << ", CC " << r.mean.cc.plateau << ", MCC "
             << r.mean.mcc.plateau << ", CBBM " << r.mean.cbbm.plateau << " J/m^2; results in "

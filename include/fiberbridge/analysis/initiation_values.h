@@ -1,8 +1,9 @@
 #pragma once
 // ASTM D5528 initiation values of one record (docs/design.md section 6, "Initiation values"):
 // NL (onset of non-linearity of load against opening), 5 %/max (the compliance 5 % above the
-// initial one, or the peak load if it comes first) and VIS (the first new crack reading), each
-// with G by the same reductions as the propagation values.
+// initial one, or the peak load if it comes first) and VIS (the first visible growth from the
+// insert, D5528: the first crack reading beyond a0, with a note when the readings are too sparse
+// to resolve it), each with G by the same reductions as the propagation values.
 #include "fiberbridge/analysis/equivalent_crack.h"
 #include "fiberbridge/analysis/test_record.h"
 
@@ -22,6 +23,9 @@ struct InitiationPoint {
   double G_MBT = NAN;     ///< MBT at a0 (ASTM D5528 uses a0 for initiation) [J/m^2]
   double G_CBBM = NAN;    ///< CBBM at the row's equivalent crack [J/m^2]
   std::string definition; ///< e.g. "5 % compliance offset" or "maximum load"
+  /// Why the point is uncertain ("" when it is not): VIS at crack readings too sparse to
+  /// resolve the first visible growth.
+  std::string note;
 };
 
 struct InitiationValues {
@@ -34,6 +38,10 @@ struct InitiationValues {
 struct InitiationOptions {
   double nl_tolerance = 0.01;
   double offset = 0.05; ///< 5 %/max's compliance increase
+  /// VIS is ASTM D5528's first visible growth from the insert. A first reading further than
+  /// this beyond a0 [m] (readings only at the 1 mm marks D5528 asks for along the edge) does
+  /// not resolve it: growth began somewhere before, and VIS at the reading comes late.
+  double vis_resolution = 0.5e-3;
 };
 
 /// The reductions the G values come from: MBT needs |Delta| from propagation (NaN: no G_MBT),
