@@ -167,6 +167,30 @@ TEST(EquivalentCrack, InitiationValuesOfAConstantGcRecord) {
   EXPECT_NEAR(e.initiation.offset5_max.G_CBBM / Gc, 1, 0.005);
 }
 
+// VIS at crack readings only at the 1 mm marks: D5528's VIS is the first visible growth, which
+// the marks show only when the crack reaches the first one. The point stays the first reading
+// (what was seen), and a note says the readings are too sparse to resolve the onset; the dense
+// readings of the same record (every 0.05 mm) give none.
+TEST(EquivalentCrack, VisAtSparseReadingsIsNoted) {
+  TestRecord sparse = constant_gc_record(true);
+  const double a0 = sparse.crack_length.front();
+  for (double& a : sparse.crack_length)
+    a = a0 + std::floor((a - a0) / mm + 1e-9) * mm; // the last mark passed
+  const auto r = reduce_record(sparse, test_specimen(), linear_options());
+  ASSERT_TRUE(r.initiation.vis.found);
+  EXPECT_NEAR(sparse.crack_length[r.initiation.vis.row] - a0, 1 * mm, 1e-9);
+  const std::string& note = r.initiation.vis.note;
+  EXPECT_NE(note.find("VIS: the first crack reading beyond a0 is 1 mm past it"), std::string::npos)
+      << note;
+  EXPECT_NE(note.find("first visible growth"), std::string::npos) << note;
+  bool in_notes = false;
+  for (const auto& n : r.notes)
+    in_notes |= n == note;
+  EXPECT_TRUE(in_notes);
+  const auto dense = reduce_record(constant_gc_record(true), test_specimen(), linear_options());
+  EXPECT_TRUE(dense.initiation.vis.note.empty()) << dense.initiation.vis.note;
+}
+
 // Pool-adjacent-violators against hand-worked cases.
 TEST(EnergyRate, IsotonicRegression) {
   const std::vector<double> y = {1, 3, 2, 4, 3, 3, 5};

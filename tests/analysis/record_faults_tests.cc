@@ -422,3 +422,31 @@ TEST(RecordFaults, WhatWouldGiveAWrongResultIsRefused) {
     EXPECT_TRUE(contains(m, "no crack growth, so no R curve")) << m;
   }
 }
+
+// An absolute crosshead column (the position, 112 mm at the start, never zeroed): the zero
+// offset is removed, and the noise band is then a fraction of the openings measured from that
+// zero, not of the 112 mm position (issue 42: a band ten times too wide passed real negatives
+// as noise). Five rows 0.08 mm below zero mid-test are beyond the band (1e-3 of ~25 mm) and
+// refused; with the band taken before the shift (1e-3 of ~137 mm) they were set to 0.
+TEST(RecordFaults, NoiseBandIsTakenAfterTheZeroOffset) {
+  auto rows = raw_rows();
+  for (auto& r : rows)
+    r[1] = fmt(value(r[1]) + 112);
+  TempFile f("absolute.csv", rows);
+  const auto r = read_test_records(f.path()).at(0);
+  const std::string c = all(r.cleaning);
+  EXPECT_TRUE(contains(c, "Opening zero offset 112")) << c;
+  const auto p = plain();
+  ASSERT_EQ(r.opening.size(), p.opening.size());
+  for (std::size_t i = 0; i < r.opening.size(); ++i)
+    if (p.opening[i] > 0.2 * mm)
+      ASSERT_NEAR(r.opening[i], p.opening[i], 0.2 * mm) << "row " << i;
+
+  const double x0 = value(rows[0][1]) - r.opening[0]; // where the reader put the zero
+  for (std::size_t i = 200; i < 205; ++i)
+    rows[i][1] = fmt(x0 - 0.08);
+  TempFile g("absolute_negative.csv", rows);
+  const std::string m = refusal(g.path());
+  EXPECT_TRUE(contains(m, "is negative beyond reading noise")) << m;
+  EXPECT_TRUE(contains(m, "after removing the zero offset 112")) << m;
+}
