@@ -1,7 +1,8 @@
 // libFuzzer target: the test-record reader (analysis/test_record.h read_test_records) with its
 // column map (RecordColumnMap::parse, the scene's Test/Columns), over every layout the reader
 // detects (core/exported_table.h: delimiters, decimal comma, preamble, units rows, quotes,
-// thousands separators) and every cleaning step. Input: a record file; a first line
+// thousands separators, text encodings and code pages, data blocks and stacked specimens,
+// damaged files) and every cleaning step. Input: a record file; a first line
 // "#columns: MAP" (a comment to the reader, so bundled records are valid inputs) is parsed as
 // the column map. The seed corpus (scripts/fuzz.sh) holds the shared records and one file per
 // layout and per fault class (tests/analysis/data/record_layout_*.csv).
@@ -25,6 +26,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     // The three crack-length sources, chosen by the input's length (deterministic per input).
     options.crack_length = static_cast<analysis::CrackLengthSource>(size % 3);
+    // Mostly detected encodings (UTF-8, UTF-16 with or without BOM, the code pages scored with
+    // iconv); some inputs forced through a given one, as Test/Encoding does.
+    static const char* const encodings[] = {"", "", "", "", "CP1250", "CP932", "UTF-16LE"};
+    options.encoding = encodings[(size / 3) % 7];
     for (const auto& r : analysis::read_test_records(fuzz::as_file(text, ".csv"), options)) {
       const auto rows = analysis::crack_reading_rows(r);
       // The hand-over contract (test_record.h): one crack entry per row or none; readings are

@@ -473,7 +473,9 @@ ExportedTable ExportedTable::parse(const std::string& raw, const std::string& so
   for (std::size_t k = 0; k < d.first_data; ++k)
     if (cells::split(lines[k].text, d.layout.delimiter, cells) && !specimen_label(cells).empty())
       t.block_labels_[0] = specimen_label(cells);
-  bool specimen_blocks = !t.block_labels_[0].empty();
+  // A preamble's "Probe : DCB-01" alone names no stack: one specimen stays one record named
+  // after the file; only a second titled block makes the file a stack.
+  bool specimen_blocks = false;
   std::size_t block = 0;
   for (std::size_t i = d.first_data; i < end; ++i) {
     const std::string at = source_name + ":" + std::to_string(lines[i].number);
