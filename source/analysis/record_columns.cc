@@ -80,8 +80,8 @@ std::optional<std::size_t> match_header(const ExportedTable& t, const std::strin
   const auto& h = t.header();
   if (const std::size_t n = column_position(wanted)) {
     if (n > h.size())
-      throw InputError(t.source() + ":" + std::to_string(t.layout().header_line) + ": '" +
-                       wanted + "' for " + ours + " asks for column " + std::to_string(n) +
+      throw InputError(t.source() + ":" + std::to_string(t.layout().header_line) + ": '" + wanted +
+                       "' for " + ours + " asks for column " + std::to_string(n) +
                        " but the rows have " + std::to_string(h.size()) +
                        " (headers found: " + headers_found(t) + ")");
     return n - 1;

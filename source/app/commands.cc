@@ -38,7 +38,7 @@ Usage:
                       [--j-tip J_M2] [--out DIR]   the R(delta) a law implies (Eq. 2)
   fiberbridge synth --out FILE [law options] [--replicates N] [--noise J_M2] [--seed S]
                                         synthetic replicate data from a law (labelled as such)
-  fiberbridge reduce RECORD.csv... --width MM --arm-thickness MM [--columns MAP] [--out DIR]
+  fiberbridge reduce RECORD.csv... --width MM --arm-thickness MM [--columns MAP] [--encoding E] [--out DIR]
                                         raw DCB records -> R(a) by direct energy, MBT, CC, MCC,
                                         CBBM (equivalent crack, also without crack readings)
   fiberbridge dic FRAMES... --record MACHINE.csv [--columns MAP] [--format F] [--coordinates mm|px]

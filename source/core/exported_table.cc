@@ -233,7 +233,9 @@ std::string specimen_label(const std::vector<std::string>& cells) {
   std::string low;
   for (char c : text)
     low += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (const char* word : {"specimen", "sample", "probe", "pr\xC3\xBC" "fk\xC3\xB6rper"}) {
+  for (const char* word : {"specimen", "sample", "probe",
+                           "pr\xC3\xBC"
+                           "fk\xC3\xB6rper"}) {
     const std::string w = word;
     if (low.rfind(w, 0) != 0 || text.size() > 60)
       continue;
@@ -257,8 +259,8 @@ void refuse_damaged_text(const std::string& text, const std::string& source) {
   std::size_t first = std::string::npos, count = 0;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const auto b = static_cast<unsigned char>(text[i]);
-    const bool control = (b < 0x20 && b != '\t' && b != '\n' && b != '\r' && b != '\f') ||
-                         b == 0x7F;
+    const bool control =
+        (b < 0x20 && b != '\t' && b != '\n' && b != '\r' && b != '\f') || b == 0x7F;
     if (!control || (b == 0x1A && i + 1 == text.size()))
       continue;
     if (first == std::string::npos)
@@ -363,8 +365,8 @@ bool parse_exported_number(const std::string& cell, char decimal, double& value,
 
 bool TableLayout::is_export() const {
   return delimiter != ',' || decimal != '.' || units_line != 0 || preamble_lines != 0 ||
-         encoding != "UTF-8" || repeated_headers != 0 || short_rows != 0 ||
-         trailer_lines != 0 || continued_blocks != 0 || specimen_blocks != 0;
+         encoding != "UTF-8" || repeated_headers != 0 || short_rows != 0 || trailer_lines != 0 ||
+         continued_blocks != 0 || specimen_blocks != 0;
 }
 
 std::string TableLayout::describe() const {
@@ -575,7 +577,8 @@ std::vector<double> ExportedTable::numeric(std::size_t column, std::size_t* grou
     }
     if (!is_missing_value(cells[r]))
       throw InputError(source_ + ":" + std::to_string(line_numbers_[r]) + ": column '" +
-                       message_excerpt(header_[column]) + "' holds '" + message_excerpt(cells[r]) + "', expected a number (decimal " +
+                       message_excerpt(header_[column]) + "' holds '" + message_excerpt(cells[r]) +
+                       "', expected a number (decimal " +
                        (layout_.decimal == ',' ? "comma" : "point") + ") or an empty cell");
     values[r] = NAN;
   }

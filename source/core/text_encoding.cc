@@ -80,16 +80,17 @@ char32_t next_code_point(const std::string& s, std::size_t& i) {
   return cp;
 }
 
-bool ascii_letter(char32_t c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool ascii_letter(char32_t c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+}
 
 /// Letters of Central European languages that windows-1252 does not have (where windows-1250
 /// puts them, windows-1252 has symbols such as '¹' and '¿'): evidence for windows-1250.
 bool central_european_letter(char32_t c) {
-  static const char32_t letters[] = {0x104, 0x105, 0x118, 0x119, 0x141, 0x142, 0x143, 0x144,
-                                     0x15A, 0x15B, 0x179, 0x17A, 0x17B, 0x17C, 0x106, 0x107,
-                                     0x158, 0x159, 0x11A, 0x11B, 0x16E, 0x16F, 0x150, 0x151,
-                                     0x170, 0x171, 0x164, 0x165, 0x10E, 0x10F, 0x13D, 0x13E,
-                                     0x139, 0x13A, 0x147, 0x148};
+  static const char32_t letters[] = {0x104, 0x105, 0x118, 0x119, 0x141, 0x142, 0x143, 0x144, 0x15A,
+                                     0x15B, 0x179, 0x17A, 0x17B, 0x17C, 0x106, 0x107, 0x158, 0x159,
+                                     0x11A, 0x11B, 0x16E, 0x16F, 0x150, 0x151, 0x170, 0x171, 0x164,
+                                     0x165, 0x10E, 0x10F, 0x13D, 0x13E, 0x139, 0x13A, 0x147, 0x148};
   return std::find(std::begin(letters), std::end(letters), c) != std::end(letters);
 }
 
@@ -236,7 +237,9 @@ std::string iconv_name(const std::string& given) {
 
 DecodedText decode_text(const std::string& raw, const std::string& encoding,
                         const std::string& source, const std::string& where) {
-  const auto starts = [&](const char* bom, std::size_t n) { return raw.compare(0, n, bom, n) == 0; };
+  const auto starts = [&](const char* bom, std::size_t n) {
+    return raw.compare(0, n, bom, n) == 0;
+  };
   const bool bom8 = starts("\xEF\xBB\xBF", 3), bom16le = starts("\xFF\xFE", 2),
              bom16be = starts("\xFE\xFF", 2);
   const std::string given = encoding == "auto" ? "" : encoding;

@@ -126,7 +126,8 @@ TEST(RecordEncodings, CodePagesAreDetected) {
 // encoding assumed; the right encoding given reads it.
 TEST(RecordEncodings, UnmatchedMapNamesTheEncodingAndTheOverrideReads) {
   TempFile f("pl.csv", shared_with_header("Czas,Wydłużenie,Obciążenie,Pęknięcie", "CP1250"));
-  const std::string map = "time_s: Czas, opening_mm: Wydłużenie, load_N: Obciążenie, a_mm: Pęknięcie";
+  const std::string map =
+      "time_s: Czas, opening_mm: Wydłużenie, load_N: Obciążenie, a_mm: Pęknięcie";
   const std::string m = refusal(f.path(), with_map(map, "CP1252"));
   EXPECT_TRUE(contains(m, "pl.csv:1: no column 'Wydłużenie' for opening_mm")) << m;
   EXPECT_TRUE(contains(m, "#3 'Obci¹¿enie'")) << m;

@@ -460,9 +460,9 @@ TEST(RecordLayouts, NoCrackColumnGivesAnEmptyCrackLength) {
 // code-page seeds map by position (their first line is read as bytes, like the fuzz target's).
 TEST(RecordLayouts, FuzzSeedsAreRead) {
   std::vector<TestRecord> records;
-  for (const char* name : {"bluehill", "testxpert", "tabbed", "mts", "spreadsheet",
-                           "bluehill_cp1250", "trapezium_sjis", "mpt_blocks", "stacked", "utf16",
-                           "faults"}) {
+  for (const char* name :
+       {"bluehill", "testxpert", "tabbed", "mts", "spreadsheet", "bluehill_cp1250",
+        "trapezium_sjis", "mpt_blocks", "stacked", "utf16", "faults"}) {
     SCOPED_TRACE(name);
     const std::string path =
         std::string(FIBERBRIDGE_SOURCE_DIR) + "/tests/analysis/data/record_layout_" + name + ".csv";
@@ -644,7 +644,8 @@ TEST(RecordLayouts, ColumnsByPosition) {
     read_test_records(f.path(), with_map("time_s: #1, opening_mm: #2, load_N: #9, a_mm: #4"));
     FAIL() << "#9 of four columns was accepted";
   } catch (const InputError& e) {
-    EXPECT_TRUE(contains(e.what(), "'#9' for load_N asks for column 9 but the rows have 4")) << e.what();
+    EXPECT_TRUE(contains(e.what(), "'#9' for load_N asks for column 9 but the rows have 4"))
+        << e.what();
     EXPECT_TRUE(contains(e.what(), "#3 '試験力' (N)")) << e.what();
     EXPECT_TRUE(contains(e.what(), "Shift-JIS (CP932)")) << e.what();
   }

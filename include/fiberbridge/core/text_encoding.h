@@ -28,7 +28,8 @@ struct DecodedText {
 /// its line and the encoding when the text does not convert (an odd byte count in UTF-16 says a
 /// byte was lost), and for an encoding name iconv does not know (`where` names the key).
 DecodedText decode_text(const std::string& raw, const std::string& encoding,
-                        const std::string& source, const std::string& where = "Test/Encoding or --encoding");
+                        const std::string& source,
+                        const std::string& where = "Test/Encoding or --encoding");
 
 /// `text` for a message: at most `max_chars` bytes (cut at a character boundary, "..." added),
 /// control characters (NUL included) written as \xNN so that a message is one readable line.
