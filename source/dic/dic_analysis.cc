@@ -129,6 +129,24 @@ FrameResult analyse_one(const PlaneFrame& f, const Reference& ref, const DicOpti
   return r;
 }
 
+/// The coordinates' unit the frames state (DICe's header) wins over the option's default: pixels
+/// read as mm put the points 1/pixel-size too far apart, which surfaced as a gauge length "below
+/// the point spacing" (issue 42). Pixels need the pixel size to become lengths.
+FrameGeometry stated_geometry(const RawFrame& raw, FrameGeometry g) {
+  if (raw.stated_coordinates.empty() || (raw.stated_coordinates == "px") == g.pixels)
+    return g;
+  if (raw.stated_coordinates == "mm") {
+    g.pixels = false;
+    return g;
+  }
+  if (!(g.pixel_size > 0))
+    throw InputError(raw.source + ":" + std::to_string(raw.stated_line) +
+                     ": the frame states its coordinates in px; give the pixel size "
+                     "(DIC/Pixel size, --pixel-size MM) to turn them into lengths");
+  g.pixels = true;
+  return g;
+}
+
 } // namespace
 
 DicAnalysis analyse_frames(const std::vector<FrameFile>& files, const DicOptions& o) {
@@ -144,7 +162,8 @@ DicAnalysis analyse_frames(const std::vector<FrameFile>& files, const DicOptions
 
   DicAnalysis a;
   const RawFrame first_raw = read_frame(files.front().path, o.read);
-  const PlaneFrame first = to_crack_coordinates(first_raw, o.geometry);
+  const FrameGeometry geometry = stated_geometry(first_raw, o.geometry);
+  const PlaneFrame first = to_crack_coordinates(first_raw, geometry);
   Reference ref;
   ref.spacing = point_spacing(first);
   std::size_t count = 0;
@@ -175,7 +194,7 @@ DicAnalysis analyse_frames(const std::vector<FrameFile>& files, const DicOptions
       try {
         const RawFrame raw = i == 0 ? first_raw : read_frame(files[i].path, o.read);
         column_times[i] = raw.time;
-        const PlaneFrame f = i == 0 ? first : to_crack_coordinates(raw, o.geometry);
+        const PlaneFrame f = i == 0 ? first : to_crack_coordinates(raw, geometry);
         a.frames[i] = analyse_one(f, ref, o);
         a.frames[i].file = files[i];
       } catch (...) {

@@ -177,8 +177,51 @@ std::vector<std::string> preset(Layout layout, int col, bool pixels) {
   }
 }
 
+/// What a strain unit multiplies by: 0.01 for %, 1 for [1], [-] or none; -1 for anything else.
+double strain_factor_of(const std::string& unit) {
+  return unit == "%" ? 0.01 : unit == "1" || unit == "-" || unit.empty() ? 1.0 : -1;
+}
+
+/// A units cell ("[mm]", "mm", "%"): the unit without brackets.
+std::string units_cell(std::string_view cell) {
+  std::string_view u = unquote(cell);
+  if (u.size() >= 2 && u.front() == '[' && u.back() == ']')
+    u = trim(u.substr(1, u.size() - 2));
+  return std::string(u);
+}
+
 std::string where(const std::string& source, std::size_t line) {
   return source + ":" + std::to_string(line);
+}
+
+/// A point given twice (the same reference x, y) with different displacements or strain: an
+/// export of two overlapping areas of interest, or a damaged file. Which one is the material's is
+/// not ours to guess, and taking either moved the tip by tens of mm (issue 42): refused. The same
+/// point repeated with the same values is harmless and kept.
+void refuse_conflicting_duplicates(const RawFrame& f, const std::vector<std::size_t>& lines) {
+  std::vector<std::size_t> order;
+  order.reserve(f.x.size());
+  for (std::size_t i = 0; i < f.x.size(); ++i)
+    if (f.valid[i] && std::isfinite(f.x[i]) && std::isfinite(f.y[i]))
+      order.push_back(i);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return f.x[a] < f.x[b] ||
+           (f.x[a] == f.x[b] && (f.y[a] < f.y[b] || (f.y[a] == f.y[b] && a < b)));
+  });
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const std::size_t a = order[k - 1], b = order[k];
+    if (f.x[a] != f.x[b] || f.y[a] != f.y[b])
+      continue;
+    if (f.u[a] == f.u[b] && f.v[a] == f.v[b] && f.eyy[a] == f.eyy[b])
+      continue;
+    const std::size_t la = std::min(lines[a], lines[b]), lb = std::max(lines[a], lines[b]);
+    throw InputError(where(f.source, lb) + ": point (" + fmt(f.x[b]) + ", " + fmt(f.y[b]) +
+                     ") is also on line " + std::to_string(la) + " with other values (eyy " +
+                     fmt(f.eyy[lines[a] < lines[b] ? a : b]) + " there, " +
+                     fmt(f.eyy[lines[a] < lines[b] ? b : a]) +
+                     " here): a point given twice with different displacements or strain; "
+                     "export one area of interest, or remove one of the two rows");
+  }
 }
 
 } // namespace
@@ -330,7 +373,7 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
         frame.used[our_names[col]] = header[index[col]];
     }
     const std::string unit = unit_of(header[index[ceyy]]);
-    frame.strain_factor = unit == "%" ? 0.01 : unit == "1" || unit == "-" || unit == "" ? 1.0 : -1;
+    frame.strain_factor = strain_factor_of(unit);
     if (unit.empty() && layout == Layout::gom)
       frame.strain_factor = 0.01; // GOM writes strains in percent
     if (frame.strain_factor < 0)
@@ -340,6 +383,11 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
 
   double values[n_cols];
   bool valid_is_flag = false;
+  // GOM Correlate / ZEISS Inspect native CSV: a `stage;index;relative_time;date` line and its one
+  // value row above the point table, and a units line under the point table's header.
+  std::vector<std::string> stage_names;
+  bool stage_values_read = false, after_header = false;
+  std::vector<std::size_t> row_lines; // the file line of each point (duplicates are named by it)
   while (pos < text.size()) {
     auto end = text.find('\n', pos);
     if (end == std::string_view::npos)
@@ -352,6 +400,22 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
       continue; // blank lines separate VIC's areas of interest
     if (content.substr(0, 3) == "***") {
       dice_banner = true;
+      // DICe states its coordinates in the comment block ("*** Coordinates: px, y down"): the
+      // analysis takes them from here rather than from an option the user may not know to give.
+      const std::string l = lower(content);
+      const auto c = l.find("coordinates");
+      if (c != std::string::npos && frame.stated_coordinates.empty()) {
+        const std::string rest = l.substr(c + 11);
+        // DICe 2D writes image coordinates ("(0,0) as upper left corner of image"): pixels.
+        const bool px = rest.find("px") != std::string::npos ||
+                        rest.find("pixel") != std::string::npos ||
+                        rest.find("image") != std::string::npos;
+        const bool mm = rest.find("mm") != std::string::npos;
+        if (px != mm) {
+          frame.stated_coordinates = px ? "px" : "mm";
+          frame.stated_line = line_no;
+        }
+      }
       continue;
     }
     if (content.front() == '#') {
@@ -364,6 +428,30 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
       }
       continue;
     }
+    if (header.empty() &&
+        (!stage_names.empty() ||
+         lower(unquote(content.substr(0, content.find_first_of(";,\t")))) == "stage")) {
+      split(content, content.find(';') != std::string_view::npos ? ';' : ',', cells);
+      if (stage_names.empty()) {
+        for (const auto c : cells)
+          stage_names.emplace_back(lower(unquote(c)));
+        continue;
+      }
+      if (!stage_values_read) {
+        stage_values_read = true;
+        if (cells.size() != stage_names.size())
+          throw InputError(where(source, line_no) + ": the stage line above names " +
+                           std::to_string(stage_names.size()) + " values, this row has " +
+                           std::to_string(cells.size()) + " (GOM stage block)");
+        for (std::size_t i = 0; i < cells.size(); ++i) {
+          double t;
+          if (stage_names[i] == "relative_time" && parse_number(cells[i], t) == Cell::number)
+            frame.stage_time = t;
+        }
+        continue;
+      }
+      stage_names.clear(); // the stage block is over: this line is the point table's header
+    }
     if (header.empty()) {
       split(content, content.find(';') != std::string_view::npos ? ';' : ',', cells);
       double probe;
@@ -375,11 +463,34 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
       } else {
         take_header(content, line_no);
         valid_is_flag = index[cvalid] >= 0 && lower(header[index[cvalid]]) == "valid";
+        after_header = true;
         continue;
       }
       valid_is_flag = index[cvalid] >= 0 && lower(header[index[cvalid]]) == "valid";
     }
     split(content, delim, cells);
+    if (after_header) {
+      after_header = false;
+      // A units line under the header (GOM native: ";mm;mm;...;%"): no number in it.
+      bool units_line = cells.size() == header.size();
+      bool some_text = false;
+      for (std::size_t i = 0; units_line && i < cells.size(); ++i) {
+        double probe;
+        const auto kind = parse_number(cells[i], probe);
+        units_line = kind != Cell::number;
+        some_text = some_text || kind == Cell::text;
+      }
+      if (units_line && some_text) {
+        const std::string unit = units_cell(cells[index[ceyy]]);
+        const double factor = strain_factor_of(unit);
+        if (factor < 0)
+          throw InputError(where(source, line_no) + ": strain column '" + header[index[ceyy]] +
+                           "' has unit '" + unit + "' in the units line; expected %, 1 or none");
+        if (!unit.empty() || unit_of(header[index[ceyy]]).empty())
+          frame.strain_factor = unit.empty() && frame.layout == Layout::gom ? 0.01 : factor;
+        continue;
+      }
+    }
     if (cells.size() != header.size()) {
       if (content == header_line_text)
         continue; // a header repeated before the next area of interest
@@ -411,11 +522,15 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
     frame.eyy.push_back(values[ceyy] * frame.strain_factor);
     frame.valid.push_back(failed ? 0 : 1);
     frame.n_failed += failed;
+    row_lines.push_back(line_no);
   }
+  if (std::isnan(frame.time) && !std::isnan(frame.stage_time))
+    frame.time = frame.stage_time;
   if (header.empty())
     throw InputError(source + ": no header line with column names (empty DIC frame?)");
   if (frame.x.empty())
     throw InputError(source + ": header found but no data rows");
+  refuse_conflicting_duplicates(frame, row_lines);
   return frame;
 }
 

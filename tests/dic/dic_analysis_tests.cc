@@ -420,3 +420,32 @@ TEST(DicTip, TiltedCrackPlaneFromTwoMarkedPoints) {
   FrameGeometry steep;
   EXPECT_THROW(steep.set_from_points(0, 0, 10, 5, "DIC/Crack plane points"), InputError);
 }
+
+// DICe frames in pixels read without Coordinates = px (issue 42): the header's coordinates are
+// taken, with the pixel size given; without it the message says the frames are in px.
+TEST(DicLayoutsStated, DicePixelsWithoutTheCoordinatesOption) {
+  const Case c{Out::dice, true, true, +1, "DICe_solution_%d.txt"};
+  SyntheticDcb dcb;
+  dcb.noise_v = 1e-6;
+  const History hist;
+  const FrameGeometry g = geometry_for(c);
+  const fs::path dir = fresh_dir("dice_stated");
+  const auto paths = write_history(dir, dcb, hist, g, c);
+  DicOptions told = options_for(g);
+  DicOptions untold = told;
+  untold.geometry.pixels = false;
+  untold.read.pixel_coordinates = false;
+  const DicAnalysis a = analyse_frames(order_frames(paths, "test"), told);
+  const DicAnalysis b = analyse_frames(order_frames(paths, "test"), untold);
+  ASSERT_EQ(a.frames.size(), b.frames.size());
+  EXPECT_NEAR(b.spacing, dcb.h, 1e-9);
+  for (std::size_t k = 0; k < a.frames.size(); ++k)
+    EXPECT_EQ(a.frames[k].tip.s, b.frames[k].tip.s) << k;
+  untold.geometry.pixel_size = 0;
+  try {
+    analyse_frames(order_frames(paths, "test"), untold);
+    ADD_FAILURE() << "pixels without a pixel size were read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("in px"), std::string::npos) << e.what();
+  }
+}

@@ -198,3 +198,49 @@ TEST(DicFrameSet, FramesOutOfTimeOrderAreAnError) {
         << e.what();
   }
 }
+
+// GOM Correlate / ZEISS Inspect native CSV (issue 42): the stage block above the point table
+// (its relative_time is the frame's time) and the units line under the header (strains in %).
+TEST(DicFrameReader, GomNativeStageBlockAndUnitsLine) {
+  const RawFrame f = read_frame(data("gom_correlate_native_stage_7.csv"), {});
+  EXPECT_EQ(f.layout, Layout::gom);
+  ASSERT_EQ(f.x.size(), 3u);
+  EXPECT_DOUBLE_EQ(f.time, 3.5);
+  EXPECT_DOUBLE_EQ(f.strain_factor, 0.01);
+  EXPECT_DOUBLE_EQ(f.eyy[0], 0.02);
+  EXPECT_DOUBLE_EQ(f.y[2], 0.25);
+  EXPECT_EQ(f.used.at("x"), "x_undef");
+  // As `--format gom` forces it.
+  FrameReadOptions gom;
+  gom.layout = Layout::gom;
+  EXPECT_EQ(read_frame(data("gom_correlate_native_stage_7.csv"), gom).x.size(), 3u);
+}
+
+TEST(DicFrameReader, UnitsLineWithAStrainUnitWeCannotReadIsRefused) {
+  const std::string e = error_of("stage;index;relative_time;date\n1;1;0.5;x\n"
+                                 "id;x_undef;y_undef;u;v;epsy\n;mm;mm;mm;mm;ppm\n1;1;2;3;4;5\n");
+  EXPECT_NE(e.find("frame.csv:4"), std::string::npos) << e;
+  EXPECT_NE(e.find("ppm"), std::string::npos) << e;
+}
+
+// DICe states its coordinates in its comment block: image coordinates are pixels.
+TEST(DicFrameReader, DiceStatesItsCoordinates) {
+  const RawFrame f = read_frame(data("dice_solution_3.txt"), {});
+  EXPECT_EQ(f.stated_coordinates, "px");
+  EXPECT_EQ(f.stated_line, 10u);
+  const RawFrame m = parse_frame("***\n*** Coordinates: mm, y up\n***\nSUBSET_ID,COORDINATE_X,"
+                                 "COORDINATE_Y,DISPLACEMENT_X,DISPLACEMENT_Y,SIGMA,VSG_STRAIN_YY\n"
+                                 "0,1,2,0,0,0.01,0.001\n",
+                                 "DICe_solution_1.txt", {});
+  EXPECT_EQ(m.stated_coordinates, "mm");
+}
+
+// A point given twice with other values (issue 42: the tip jumped 22 mm) is refused, naming
+// both lines; the same point repeated with the same values is kept.
+TEST(DicFrameReader, DuplicatedPointWithConflictingStrainIsRefused) {
+  const std::string e = error_of("x,y,u,v,eyy\n1,2,0,0,0.001\n1.5,2,0,0,0.001\n1,2,0,0,0.3\n");
+  EXPECT_NE(e.find("frame.csv:4"), std::string::npos) << e;
+  EXPECT_NE(e.find("line 2"), std::string::npos) << e;
+  const RawFrame same = parse_frame("x,y,u,v,eyy\n1,2,0,0,0.001\n1,2,0,0,0.001\n", "f.csv", {});
+  EXPECT_EQ(same.x.size(), 2u);
+}

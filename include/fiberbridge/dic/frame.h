@@ -10,6 +10,8 @@
 //  - GOM / ZEISS (ARAMIS, Correlate) and nodemap exports: `;` delimited, `#` metadata lines (the
 //    nodemap's header is the last `#` line before the data: "ID; x_undef [mm]; y_undef [mm]; ...;
 //    epsy [%]; ..."), strains in percent unless a column says [1].
+//  - GOM Correlate / ZEISS Inspect native CSV: a `stage;index;relative_time;date` line and one
+//    value row above the point table, then the table's header and a units line (";mm;mm;...;%").
 //  - plain: our own names x, y, u, v, eyy (and valid, time_s).
 // The coordinates are reference (undeformed) positions in every layout: the points are material
 // points, which the extensometer relies on. Values stay in the file's units (mm or px) here; the
@@ -60,11 +62,17 @@ struct RawFrame {
   std::size_t n_failed = 0;
   std::map<std::string, std::string> used; ///< our name -> the file's header it came from
   double strain_factor = 1; ///< what the strain column was multiplied by (0.01 for %)
+  /// The coordinates' unit the file states ("px" or "mm", DICe's `*** Coordinates:` line), empty
+  /// when it says nothing; stated_line is that line.
+  std::string stated_coordinates;
+  std::size_t stated_line = 0;
+  /// [s] GOM native CSV: the stage block's relative_time (also `time` without a time column).
+  double stage_time = NAN;
 };
 
 /// Reads one frame file. InputError naming file:line for: no header, a missing column (with the
 /// columns present), a row with another number of cells than the header, a non-number, an
-/// infinite value, no data row.
+/// infinite value, no data row, a point given twice with different values.
 RawFrame read_frame(const std::string& path, const FrameReadOptions& options);
 /// The same on text in memory (`source` names it in messages).
 RawFrame parse_frame(std::string_view text, const std::string& source,
