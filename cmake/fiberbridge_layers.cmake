@@ -1,7 +1,7 @@
 # The library graph (docs/design.md section 4), one-way:
 #   core <- law <- result <- analysis ; core <- specimen <- analysis ;
 #   law + specimen + result <- beam, mpm, fem (each on its own) ;
-#   core <- dic (DIC frames) ; analysis + beam <- identify ; everything <- app.
+#   core <- dic (DIC frames) <- result (the virtual DIC test writes frames in dic's layouts) ; analysis + beam <- identify ; everything <- app.
 # FIBERBRIDGE_LAYER_<lib> lists the libraries whose headers the sources of <lib> may include
 # (besides its own). fiberbridge_check_layer(<lib>) enforces it at configure time: every
 # `#include "fiberbridge/<dir>/..."` in source/<lib>/ and include/fiberbridge/<lib>/ must name
@@ -9,7 +9,7 @@
 set(FIBERBRIDGE_LAYER_core "")
 set(FIBERBRIDGE_LAYER_law core)
 set(FIBERBRIDGE_LAYER_specimen core)
-set(FIBERBRIDGE_LAYER_result law core)
+set(FIBERBRIDGE_LAYER_result dic law core)
 set(FIBERBRIDGE_LAYER_analysis result specimen law core)
 set(FIBERBRIDGE_LAYER_dic core)
 set(FIBERBRIDGE_LAYER_beam result specimen law core)

@@ -20,6 +20,8 @@ using units::kPa;
 using units::mm;
 
 void ensure_directory(const std::string& dir) {
+  if (dir.find_first_not_of(" \t") == std::string::npos)
+    throw InputError("Output directory is empty; expected a directory name (e.g. output/run)");
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir))

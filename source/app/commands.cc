@@ -10,12 +10,15 @@
 #include "fiberbridge/app/scene.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/output_guard.h"
 #include "fiberbridge/core/units.h"
+#include "fiberbridge/dic/layouts.h"
 #include "fiberbridge/law/law_spec.h"
 
 #include <boost/program_options.hpp>
 
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -71,7 +74,25 @@ bool parse(const std::vector<std::string>& args, po::options_description& desc,
     return false;
   }
   po::notify(vm);
+  // boost reads "nan" and "inf" as doubles: no option of ours means either (issue 42).
+  for (const auto& [name, v] : vm)
+    if (const double* x = boost::any_cast<double>(&v.value()); x && !std::isfinite(*x))
+      throw InputError("--" + name + ": '" + fmt(*x) + "' is not a finite number");
   return true;
+}
+
+/// The value of a numeric option within [lo, hi] (`what` says the unit and meaning); NAN when it
+/// was not given. The bounds keep a unit slip (um for mm, 1e-300) from reaching the formulas,
+/// where it would give R of 1e304 without a word.
+double option_in(const po::variables_map& vm, const char* key, double lo, double hi,
+                 const std::string& what) {
+  if (!vm.count(key))
+    return NAN;
+  const double x = vm[key].as<double>();
+  if (!(x >= lo && x <= hi))
+    throw InputError(std::string("--") + key + ": " + fmt(x) + " is out of range; expected " +
+                     what + " from " + fmt(lo) + " to " + fmt(hi));
+  return x;
 }
 
 /// The same, with one positional option `name` taking `count` arguments (-1: all the rest).
@@ -286,13 +307,13 @@ int cmd_reduce(const std::vector<std::string>& args) {
   app::ReduceStepOptions o;
   o.where = "fiberbridge reduce";
   o.files = vm["records"].as<std::vector<std::string>>();
-  o.specimen.width = vm.count("width") ? vm["width"].as<double>() * units::mm : NAN;
+  o.specimen.width = option_in(vm, "width", 0.01, 1e4, "a width in mm") * units::mm;
   o.specimen.height = // both arms
-      vm.count("arm-thickness") ? 2 * vm["arm-thickness"].as<double>() * units::mm : NAN;
+      2 * option_in(vm, "arm-thickness", 0.01, 1e4, "an arm thickness in mm") * units::mm;
   o.read.columns = analysis::RecordColumnMap::parse(vm["columns"].as<std::string>(), "--columns");
   if (const std::string e = vm["encoding"].as<std::string>(); e != "auto")
     o.read.encoding = e;
-  const double w = vm["smoothing-window"].as<double>();
+  const double w = option_in(vm, "smoothing-window", 0, 1e4, "a window in mm (0 = automatic)");
   o.reduce.smoothing_window = w > 0 ? w * units::mm : NAN;
   const std::string crack = vm["crack-length"].as<std::string>();
   if (crack != "auto" && crack != "measured" && crack != "equivalent")
@@ -306,6 +327,10 @@ int cmd_reduce(const std::vector<std::string>& args) {
   auto opt = [&](const char* key, double unit) {
     return vm.count(key) ? vm[key].as<double>() * unit : NAN;
   };
+  option_in(vm, "initial-crack", 0.01, 1e5, "a crack length a0 in mm");
+  option_in(vm, "shear-modulus", 1e-3, 1e7, "G13 in MPa");
+  option_in(vm, "transverse-modulus", 1e-3, 1e7, "E22 in MPa");
+  option_in(vm, "root-rotation", 0, 1e4, "|Delta| in mm");
   o.specimen.initial_crack = opt("initial-crack", units::mm);
   o.reduce.shear_modulus = opt("shear-modulus", 1e6);
   o.reduce.transverse_modulus = opt("transverse-modulus", 1e6);
@@ -333,7 +358,8 @@ int cmd_dic(const std::vector<std::string>& args) {
       "machine record columns: 'time_s: Time, opening_mm: Extension, load_N: Load'")(
       "frame-columns", po::value<std::string>()->default_value(""),
       "frame columns: 'eyy: ..., valid: ...' (x, y, u, v, eyy, valid, time_s)")(
-      "format", po::value<std::string>()->default_value("auto"), "auto|vic|dice|gom|plain")(
+      "format", po::value<std::string>()->default_value("auto"),
+      ("auto|" + dic::layout_names("|")).c_str())(
       "coordinates", po::value<std::string>()->default_value("mm"),
       "mm|px")("pixel-size", po::value<double>()->default_value(0), "mm per pixel (with px)")(
       "y-axis", po::value<std::string>()->default_value("up"), "up|down")(
@@ -364,17 +390,17 @@ int cmd_dic(const std::vector<std::string>& args) {
   s.format = vm["format"].as<std::string>();
   s.columns = vm["frame-columns"].as<std::string>();
   s.pixels = choice("coordinates", {"mm", "px"}) == "px";
-  s.pixel_size = vm["pixel-size"].as<double>() * units::mm;
+  s.pixel_size = option_in(vm, "pixel-size", 0, 1e3, "mm per pixel (0: none)") * units::mm;
   s.y_down = choice("y-axis", {"up", "down"}) == "down";
   s.crack_plane_y = vm["crack-plane-y"].as<double>();
   s.notch_root_x = vm["notch-root-x"].as<double>();
   s.growth_sign = choice("growth-direction", {"+x", "-x"}) == "-x" ? -1 : 1;
   s.crack_plane_points = vm["crack-plane-points"].as<std::string>();
-  s.frame_rate = vm["frame-rate"].as<double>();
+  s.frame_rate = option_in(vm, "frame-rate", 1e-9, 1e9, "images per second (Hz)");
   s.first_frame_time = vm["first-frame-time"].as<double>();
   s.frame_time_source = vm["frame-time-source"].as<std::string>();
-  s.threshold = vm["threshold"].as<double>();
-  s.gauge_length = vm["gauge-length"].as<double>() * units::mm;
+  s.threshold = option_in(vm, "threshold", 1e-9, 1, "a strain (fraction)");
+  s.gauge_length = option_in(vm, "gauge-length", 1e-3, 1e4, "a gauge length in mm") * units::mm;
   if (s.pixels && !(s.pixel_size > 0))
     throw InputError("--pixel-size: --coordinates px needs a positive pixel size (mm)");
   app::DicStepOptions o;
@@ -383,7 +409,8 @@ int cmd_dic(const std::vector<std::string>& args) {
   o.frames = vm["frames"].as<std::vector<std::string>>();
   o.machine_record = vm["record"].as<std::string>();
   o.machine_columns = vm["columns"].as<std::string>();
-  o.initial_crack = vm["initial-crack"].as<double>() * units::mm;
+  o.initial_crack =
+      option_in(vm, "initial-crack", 0.01, 1e5, "a crack length a0 in mm") * units::mm;
   const std::string out = vm["out"].as<std::string>();
   Json summary = begin_command_output(out, "dic");
   const auto r = app::run_dic(o, out, summary);
@@ -391,6 +418,13 @@ int cmd_dic(const std::vector<std::string>& args) {
   std::cout << r.analysis.frames.size() << " frame(s), " << r.analysis.frames_used << " used, "
             << r.rows.size() << " row(s) in " << r.record_path << "\n";
   return 0;
+}
+
+/// A message that already names the command ("fiberbridge reduce: ...", the steps' `where`)
+/// without it: the line starts with the command once.
+std::string unprefixed(const std::string& what, const std::string& cmd) {
+  const std::string prefix = "fiberbridge " + cmd + ": ";
+  return what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what;
 }
 
 } // namespace
@@ -430,11 +464,13 @@ int app::run_command_line(std::vector<std::string> args, unsigned rank) {
                 << " --help)\n";
   } catch (const InputError& e) {
     if (rank == 0)
-      std::cerr << "fiberbridge " << cmd << ": input error: " << e.what() << "\n";
+      std::cerr << "fiberbridge " << cmd << ": input error: " << unprefixed(e.what(), cmd) << "\n";
   } catch (const ComputationError& e) {
-    std::cerr << "fiberbridge " << cmd << on_rank << ": cannot compute: " << e.what() << "\n";
+    std::cerr << "fiberbridge " << cmd << on_rank
+              << ": cannot compute: " << unprefixed(e.what(), cmd) << "\n";
   } catch (const std::exception& e) {
-    std::cerr << "fiberbridge " << cmd << on_rank << ": error: " << e.what() << "\n";
+    std::cerr << "fiberbridge " << cmd << on_rank << ": error: " << unprefixed(e.what(), cmd)
+              << "\n";
   }
   return 1;
 }

@@ -2,6 +2,7 @@
 #include "fiberbridge/app/dic_step.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
+#include "fiberbridge/dic/layouts.h"
 
 #include <sstream>
 
@@ -13,10 +14,8 @@ void DicSection::declare_parameters(dealii::ParameterHandler& prm) {
   prm.declare_entry("Frames", "", dealii::Patterns::Anything(),
                     "DIC frames, one file per image: a glob or a comma-separated list, relative "
                     "to the scene; ordered by the image number in the names.");
-  prm.declare_entry("Format", "auto", dealii::Patterns::Selection("auto|vic|dice|gom|plain"),
-                    "Frame layout: vic (VIC-2D/3D CSV), dice (DICe solution files), gom (GOM/ZEISS "
-                    "and nodemap exports, strains in %), plain (x, y, u, v, eyy, valid); auto "
-                    "detects it.");
+  prm.declare_entry("Format", "auto", dealii::Patterns::Selection("auto|" + dic::layout_names("|")),
+                    "Frame layout: " + dic::layout_descriptions() + "; auto detects it.");
   prm.declare_entry("Columns", "", dealii::Patterns::Anything(),
                     "Optional map of our frame columns (x, y, u, v, eyy, valid, time_s) to the "
                     "files' headers, as Test/Columns, e.g. 'eyy: e_yy, valid: sigma'.");

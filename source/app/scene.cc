@@ -14,7 +14,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -79,106 +83,6 @@ void declare_everything(dealii::ParameterHandler& prm) {
 
 } // namespace
 
-void apply_setting(dealii::ParameterHandler& prm, const std::string& setting,
-                   const std::string& where) {
-  const auto eq = setting.find('=');
-  if (eq == std::string::npos)
-    throw InputError(where + " '" + setting + "': expected \"Section/Key=value\"");
-  // Blanks around the names and the value are the user's layout, not part of them.
-  const std::string path = setting.substr(0, eq);
-  const auto parts = split_list(path, '/');
-  const auto last = path.find_last_not_of(" \t");
-  if (parts.empty() || path[last] == '/')
-    throw InputError(where + " '" + setting + "': no key before '='");
-  std::string value = setting.substr(eq + 1);
-  value.erase(0, value.find_first_not_of(" \t"));
-  value.erase(value.find_last_not_of(" \t") + 1);
-  for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-    prm.enter_subsection(parts[i]);
-  try {
-    prm.set(parts.back(), value);
-  } catch (const std::exception& e) {
-    for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-      prm.leave_subsection();
-    throw InputError(where + " '" + setting + "': unknown key or value not allowed for it");
-  }
-  for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-    prm.leave_subsection();
-}
-
-namespace {
-
-/// "Section/Key" -> value of every entry, in the order of deal.II's ShortPRM listing
-/// ("subsection S", "set Key = value", "end"): the one complete listing ParameterHandler offers.
-std::vector<std::pair<std::string, std::string>> listed_entries(const std::string& listing) {
-  std::vector<std::pair<std::string, std::string>> out;
-  std::vector<std::string> path;
-  std::istringstream in(listing);
-  for (std::string line; std::getline(in, line);) {
-    line = trim_blanks(line);
-    if (line.rfind("subsection ", 0) == 0)
-      path.push_back(trim_blanks(line.substr(11)));
-    else if (line == "end" && !path.empty())
-      path.pop_back();
-    else if (line.rfind("set ", 0) == 0) {
-      const auto eq = line.find('=');
-      if (eq == std::string::npos)
-        continue;
-      std::string key;
-      for (const auto& p : path)
-        key += p + "/";
-      key += trim_blanks(line.substr(4, eq - 4));
-      out.emplace_back(key, trim_blanks(line.substr(eq + 1)));
-    }
-  }
-  return out;
-}
-
-/// Every section of the scene read in `prm` parsed once into its struct (each item's parse, the
-/// shared sections); the handler is not used after this.
-std::shared_ptr<const SceneParameters> parse_scene(dealii::ParameterHandler& prm,
-                                                   const std::string& prm_file,
-                                                   const std::vector<std::string>& overrides,
-                                                   std::vector<std::string> run) {
-  auto p = std::make_shared<SceneParameters>();
-  p->scene_file = prm_file;
-  p->overrides = overrides;
-  p->run = std::move(run);
-  p->output_directory = prm.get("Output directory");
-  std::ostringstream listing;
-  prm.print_parameters(listing, dealii::ParameterHandler::ShortPRM);
-  p->listing = listing.str();
-  p->entries = listed_entries(p->listing);
-  parse_shared_sections(prm, *p);
-  for (const auto& item : scene_items())
-    if (item.parse)
-      item.parse(prm, *p);
-  return p;
-}
-
-} // namespace
-
-std::shared_ptr<const SceneParameters>
-read_scene_parameters(const std::string& prm_file, const std::vector<std::string>& overrides) {
-  dealii::ParameterHandler prm;
-  auto run = read_scene(prm, prm_file, overrides);
-  return parse_scene(prm, prm_file, overrides, std::move(run));
-}
-
-std::shared_ptr<const SceneParameters>
-scene_parameters_with(const SceneParameters& scene, const std::vector<std::string>& settings,
-                      const std::string& where) {
-  // ParameterHandler cannot be copied, and its JSON and XML listings do not read back in deal.II
-  // 9.4 (mangled entry names): the copy reads the scene as the runner did, the file and then
-  // --set, then the settings. Nothing wrote into the scene's parameters after that
-  // (docs/design.md section 4), so the copy holds the same values but for the settings.
-  dealii::ParameterHandler prm;
-  auto run = read_scene(prm, scene.scene_file, scene.overrides);
-  for (const auto& s : settings)
-    apply_setting(prm, s, where);
-  return parse_scene(prm, scene.scene_file, scene.overrides, std::move(run));
-}
-
 namespace {
 
 /// deal.II's exception text is many lines (where in deal.II, the violated condition, then the
@@ -213,6 +117,128 @@ std::string condense(const std::string& what) {
 }
 
 } // namespace
+
+void apply_setting(dealii::ParameterHandler& prm, const std::string& setting,
+                   const std::string& where) {
+  const auto eq = setting.find('=');
+  if (eq == std::string::npos)
+    throw InputError(where + " '" + setting + "': expected \"Section/Key=value\"");
+  // Blanks around the names and the value are the user's layout, not part of them.
+  const std::string path = setting.substr(0, eq);
+  const auto parts = split_list(path, '/');
+  const auto last = path.find_last_not_of(" \t");
+  if (parts.empty() || path[last] == '/')
+    throw InputError(where + " '" + setting + "': no key before '='");
+  std::string value = setting.substr(eq + 1);
+  value.erase(0, value.find_first_not_of(" \t"));
+  value.erase(value.find_last_not_of(" \t") + 1);
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+    prm.enter_subsection(parts[i]);
+  try {
+    prm.set(parts.back(), value);
+  } catch (const std::exception& e) {
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+      prm.leave_subsection();
+    // deal.II's reason says which: no such entry, or the value against the entry's pattern.
+    throw InputError(where + " '" + setting + "': " + condense(e.what()));
+  }
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+    prm.leave_subsection();
+}
+
+namespace {
+
+/// "Section/Key" -> value of every entry, in the order of deal.II's ShortPRM listing
+/// ("subsection S", "set Key = value", "end"): the one complete listing ParameterHandler offers.
+std::vector<std::pair<std::string, std::string>> listed_entries(const std::string& listing) {
+  std::vector<std::pair<std::string, std::string>> out;
+  std::vector<std::string> path;
+  std::istringstream in(listing);
+  for (std::string line; std::getline(in, line);) {
+    line = trim_blanks(line);
+    if (line.rfind("subsection ", 0) == 0)
+      path.push_back(trim_blanks(line.substr(11)));
+    else if (line == "end" && !path.empty())
+      path.pop_back();
+    else if (line.rfind("set ", 0) == 0) {
+      const auto eq = line.find('=');
+      if (eq == std::string::npos)
+        continue;
+      std::string key;
+      for (const auto& p : path)
+        key += p + "/";
+      key += trim_blanks(line.substr(4, eq - 4));
+      out.emplace_back(key, trim_blanks(line.substr(eq + 1)));
+    }
+  }
+  return out;
+}
+
+/// A number too small or too large for a double (1e-320 is subnormal, 1e400 overflows) passes
+/// deal.II's Double pattern but not get_double, whose failure is an internal assertion with a
+/// stack trace (issue 42): refused here, before any section reads it, naming key and value.
+void refuse_unreadable_numbers(const std::vector<std::pair<std::string, std::string>>& entries,
+                               const std::string& prm_file) {
+  for (const auto& [key, value] : entries) {
+    if (value.empty())
+      continue;
+    char* end = nullptr;
+    errno = 0;
+    const double x = std::strtod(value.c_str(), &end);
+    if (end == value.c_str() || *end != '\0')
+      continue; // not a number: the entry's pattern and parse judge it
+    if (errno == ERANGE || (x != 0 && !std::isnormal(x)))
+      throw InputError(prm_file + ": " + key + " = " + value +
+                       ": not a normal double (subnormal or out of range); expected 0 or a "
+                       "magnitude between 2.3e-308 and 1.7e308");
+  }
+}
+
+/// Every section of the scene read in `prm` parsed once into its struct (each item's parse, the
+/// shared sections); the handler is not used after this.
+std::shared_ptr<const SceneParameters> parse_scene(dealii::ParameterHandler& prm,
+                                                   const std::string& prm_file,
+                                                   const std::vector<std::string>& overrides,
+                                                   std::vector<std::string> run) {
+  auto p = std::make_shared<SceneParameters>();
+  p->scene_file = prm_file;
+  p->overrides = overrides;
+  p->run = std::move(run);
+  p->output_directory = prm.get("Output directory");
+  std::ostringstream listing;
+  prm.print_parameters(listing, dealii::ParameterHandler::ShortPRM);
+  p->listing = listing.str();
+  p->entries = listed_entries(p->listing);
+  refuse_unreadable_numbers(p->entries, prm_file);
+  parse_shared_sections(prm, *p);
+  for (const auto& item : scene_items())
+    if (item.parse)
+      item.parse(prm, *p);
+  return p;
+}
+
+} // namespace
+
+std::shared_ptr<const SceneParameters>
+read_scene_parameters(const std::string& prm_file, const std::vector<std::string>& overrides) {
+  dealii::ParameterHandler prm;
+  auto run = read_scene(prm, prm_file, overrides);
+  return parse_scene(prm, prm_file, overrides, std::move(run));
+}
+
+std::shared_ptr<const SceneParameters>
+scene_parameters_with(const SceneParameters& scene, const std::vector<std::string>& settings,
+                      const std::string& where) {
+  // ParameterHandler cannot be copied, and its JSON and XML listings do not read back in deal.II
+  // 9.4 (mangled entry names): the copy reads the scene as the runner did, the file and then
+  // --set, then the settings. Nothing wrote into the scene's parameters after that
+  // (docs/design.md section 4), so the copy holds the same values but for the settings.
+  dealii::ParameterHandler prm;
+  auto run = read_scene(prm, scene.scene_file, scene.overrides);
+  for (const auto& s : settings)
+    apply_setting(prm, s, where);
+  return parse_scene(prm, scene.scene_file, scene.overrides, std::move(run));
+}
 
 std::string resolve_scene_path(const std::string& path, const std::string& scene_file) {
   namespace fs = std::filesystem;
@@ -254,7 +280,9 @@ std::vector<std::string> read_scene(dealii::ParameterHandler& prm, const std::st
       known = known || item.name == w;
     if (!known) {
       const std::string all = all_item_names;
-      if (all.find(w) != std::string::npos)
+      // A whole name of the list (a model left out of this build), not any substring of it.
+      const auto names = split_list(all, ',');
+      if (std::find(names.begin(), names.end(), w) != names.end())
         throw InputError(prm_file + ": Run item '" + w +
                          "' is not available in this build (its module is not built yet)");
       throw InputError(prm_file + ": unknown Run item '" + w + "', expected one of " + all);

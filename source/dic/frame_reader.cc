@@ -17,7 +17,9 @@ namespace fiberbridge::dic {
 namespace {
 
 const char* const our_names[] = {"x", "y", "u", "v", "eyy", "valid", "time_s"};
-enum Col { cx, cy, cu, cv, ceyy, cvalid, ctime, n_cols };
+static_assert(sizeof our_names / sizeof *our_names == n_frame_columns);
+constexpr int cx = col_x, cy = col_y, cu = col_u, cv = col_v, ceyy = col_eyy, cvalid = col_valid,
+              ctime = col_time, n_cols = n_frame_columns;
 
 std::string_view trim(std::string_view s) {
   std::size_t b = 0, e = s.size();
@@ -113,70 +115,6 @@ Cell parse_number(std::string_view c, double& value) {
   return Cell::text;
 }
 
-/// Preset header names per layout, in order of preference (exact match; gom: by stem).
-std::vector<std::string> preset(Layout layout, int col, bool pixels) {
-  switch (layout) {
-  case Layout::vic:
-    switch (col) {
-    // VIC writes image columns x, y, u, v (pixels) and, when calibrated, metric X, Y, U, V:
-    // the pair the scene's Coordinates names comes first, the other is taken as stated.
-    case cx:
-      return pixels ? std::vector<std::string>{"x", "X"} : std::vector<std::string>{"X", "x"};
-    case cy:
-      return pixels ? std::vector<std::string>{"y", "Y"} : std::vector<std::string>{"Y", "y"};
-    case cu:
-      return pixels ? std::vector<std::string>{"u", "U"} : std::vector<std::string>{"U", "u"};
-    case cv:
-      return pixels ? std::vector<std::string>{"v", "V"} : std::vector<std::string>{"V", "v"};
-    case ceyy:
-      return {"eyy"};
-    case cvalid:
-      return {"sigma"};
-    default:
-      return {};
-    }
-  case Layout::dice:
-    switch (col) {
-    case cx:
-      return {"COORDINATE_X"};
-    case cy:
-      return {"COORDINATE_Y"};
-    case cu:
-      return {"DISPLACEMENT_X"};
-    case cv:
-      return {"DISPLACEMENT_Y"};
-    case ceyy:
-      return {"VSG_STRAIN_YY"};
-    case cvalid:
-      return {"SIGMA"};
-    default:
-      return {};
-    }
-  case Layout::gom:
-    switch (col) {
-    case cx:
-      return {"x_undef", "x", "x0"};
-    case cy:
-      return {"y_undef", "y", "y0"};
-    case cu:
-      return {"u", "dx", "disp_x", "displacement_x"};
-    case cv:
-      return {"v", "dy", "disp_y", "displacement_y"};
-    case ceyy:
-      return {"epsy", "eps_y", "epsilon_y", "eps_yy", "epsilon_yy", "eyy"};
-    default:
-      return {};
-    }
-  default:
-    switch (col) {
-    case ctime:
-      return {"time_s"};
-    default:
-      return {our_names[col]};
-    }
-  }
-}
-
 /// What a strain unit multiplies by: 0.01 for %, 1 for [1], [-] or none; -1 for anything else.
 double strain_factor_of(const std::string& unit) {
   return unit == "%" ? 0.01 : unit == "1" || unit == "-" || unit.empty() ? 1.0 : -1;
@@ -225,38 +163,6 @@ void refuse_conflicting_duplicates(const RawFrame& f, const std::vector<std::siz
 }
 
 } // namespace
-
-Layout parse_layout(const std::string& text, const std::string& where) {
-  const std::string t = lower(trim(text));
-  if (t == "auto" || t.empty())
-    return Layout::automatic;
-  if (t == "vic")
-    return Layout::vic;
-  if (t == "dice")
-    return Layout::dice;
-  if (t == "gom")
-    return Layout::gom;
-  if (t == "plain")
-    return Layout::plain;
-  throw InputError(where + ": '" + text +
-                   "' is not a frame layout; expected auto, vic, dice, gom "
-                   "or plain");
-}
-
-const char* layout_name(Layout layout) {
-  switch (layout) {
-  case Layout::vic:
-    return "vic";
-  case Layout::dice:
-    return "dice";
-  case Layout::gom:
-    return "gom";
-  case Layout::plain:
-    return "plain";
-  default:
-    return "auto";
-  }
-}
 
 FrameColumnMap FrameColumnMap::parse(const std::string& text, const std::string& where) {
   FrameColumnMap map;
@@ -329,20 +235,24 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
                          " has no name");
     Layout layout = options.layout;
     if (layout == Layout::automatic) {
-      const bool has_sigma = std::find(header.begin(), header.end(), "sigma") != header.end();
-      const bool has_dice = std::find(header.begin(), header.end(), "COORDINATE_X") != header.end();
-      layout = dice_banner || has_dice      ? Layout::dice
-               : delim == ';'               ? Layout::gom
-               : has_sigma || quoted_header ? Layout::vic
-                                            : Layout::plain;
+      // The surest layout the header is (layouts.h: each entry's detect); plain otherwise.
+      const HeaderFacts facts{header, delim, dice_banner, quoted_header};
+      int best = 0;
+      layout = Layout::plain;
+      for (const auto* e : layouts())
+        if (const int score = e->detect(facts); score > best) {
+          best = score;
+          layout = e->id;
+        }
     }
+    const LayoutEntry& entry = layout_entry(layout);
     frame.layout = layout;
     for (int col = 0; col < n_cols; ++col) {
       const auto mapped = options.columns.file_header.find(our_names[col]);
       std::vector<std::string> candidates = mapped != options.columns.file_header.end()
                                                 ? std::vector<std::string>{mapped->second}
-                                                : preset(layout, col, options.pixel_coordinates);
-      const bool by_stem = layout == Layout::gom && mapped == options.columns.file_header.end();
+                                                : entry.preset(col, options.pixel_coordinates);
+      const bool by_stem = entry.by_stem && mapped == options.columns.file_header.end();
       for (const auto& want : candidates) {
         for (std::size_t i = 0; i < header.size() && index[col] < 0; ++i)
           if (by_stem ? stem_of(header[i]) == want : header[i] == want)
@@ -374,7 +284,7 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
     }
     const std::string unit = unit_of(header[index[ceyy]]);
     frame.strain_factor = strain_factor_of(unit);
-    if (unit.empty() && layout == Layout::gom)
+    if (unit.empty() && entry.percent_strains)
       frame.strain_factor = 0.01; // GOM writes strains in percent
     if (frame.strain_factor < 0)
       throw InputError(where(source, at) + ": strain column '" + header[index[ceyy]] +
@@ -487,7 +397,8 @@ RawFrame parse_frame(std::string_view text, const std::string& source,
           throw InputError(where(source, line_no) + ": strain column '" + header[index[ceyy]] +
                            "' has unit '" + unit + "' in the units line; expected %, 1 or none");
         if (!unit.empty() || unit_of(header[index[ceyy]]).empty())
-          frame.strain_factor = unit.empty() && frame.layout == Layout::gom ? 0.01 : factor;
+          frame.strain_factor =
+              unit.empty() && layout_entry(frame.layout).percent_strains ? 0.01 : factor;
         continue;
       }
     }

@@ -18,10 +18,9 @@ void FemParameters::VirtualDic::declare_parameters(dealii::ParameterHandler& prm
                     "into <Output directory>/virtual_test (2D, one MPI rank): frames/dcb_0001... "
                     "in the Format's layout, machine.csv, virtual_test_truth.csv and dic_scene.prm "
                     "(docs/design.md section 2, \"Virtual DIC test\").");
-  prm.declare_entry("Format", "vic", Selection("vic|dice|gom"),
-                    "vic: VIC-2D CSV (quoted header, sigma = -1 marks a failed point); dice: DICe "
-                    "solution file (*** header, SIGMA = -1 failed); gom: GOM/ZEISS nodemap (';', "
-                    "'#' metadata, strains in %, failed facets absent).");
+  prm.declare_entry("Format", "vic", Selection(result::dic_layout_selection()),
+                    "The frames' layout: " + result::dic_layout_descriptions() +
+                        " (dic/layouts.h says what each writes).");
   prm.declare_entry("Frame rate", "1", Double(0), "Images per second [Hz].");
   prm.declare_entry("Record rate", "10", Double(0), "Machine record rows per second [Hz].");
   prm.declare_entry("Crosshead rate", "5", Double(0),

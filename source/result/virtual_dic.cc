@@ -19,29 +19,23 @@ namespace fiberbridge::result {
 using units::mm;
 
 DicLayout parse_dic_layout(const std::string& text, const std::string& key) {
-  if (text == "vic")
-    return DicLayout::vic;
-  if (text == "dice")
-    return DicLayout::dice;
-  if (text == "gom")
-    return DicLayout::gom;
-  throw InputError(key + ": '" + text + "' is not a DIC layout; expected vic, dice or gom");
+  return dic::parse_written_layout(text, key);
 }
 
 const char* dic_layout_name(DicLayout layout) {
-  switch (layout) {
-  case DicLayout::vic:
-    return "vic";
-  case DicLayout::dice:
-    return "dice";
-  case DicLayout::gom:
-    return "gom";
-  }
-  return "?";
+  return dic::layout_name(layout);
 }
 
 const char* dic_layout_extension(DicLayout layout) {
-  return layout == DicLayout::dice ? ".txt" : ".csv";
+  return dic::layout_entry(layout).extension;
+}
+
+std::string dic_layout_selection() {
+  return dic::layout_names("|", true);
+}
+
+std::string dic_layout_descriptions() {
+  return dic::layout_descriptions(true);
 }
 
 void VirtualDicSettings::validate(const std::string& section) const {
@@ -60,8 +54,8 @@ void VirtualDicSettings::validate(const std::string& section) const {
           "must span at least two point spacings (" + fmt(2 * spacing / mm) + " mm)");
   require(pixel_size > 0, "Pixel size", "must be positive (mm/px)");
   require(failed_fraction >= 0 && failed_fraction < 1, "Failed fraction", "must lie in [0, 1)");
-  require(!(pixels && layout == DicLayout::gom), "Coordinates",
-          "GOM/ZEISS nodemaps are in mm; px is for the vic and dice layouts");
+  require(!(pixels && dic::layout_entry(layout).mm_only), "Coordinates",
+          std::string(dic_layout_name(layout)) + " frames are in mm; px is for the other layouts");
 }
 
 DicGrid make_dic_grid(const VirtualDicSettings& s, double length, double half_height) {
@@ -177,21 +171,6 @@ std::string num(double v) {
   return b;
 }
 
-/// Appends the values with `sep` between them and a line end (a frame has ~10^4 such lines).
-void append_row(std::string& t, std::initializer_list<double> values, const char* sep) {
-  char b[32];
-  bool first = true;
-  for (const double v : values) {
-    if (!first)
-      t += sep;
-    first = false;
-    // to_chars: the shortest-path printer, several times faster than printf's %.9g.
-    const auto r = std::to_chars(b, b + sizeof b, v, std::chars_format::general, 9);
-    t.append(b, r.ptr);
-  }
-  t += '\n';
-}
-
 void write_text(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
   {
@@ -209,65 +188,32 @@ void write_dic_frame(const std::string& path, const VirtualDicSettings& s, const
                      const DicFrameData& f) {
   const double to_len = s.pixels ? 1 / s.pixel_size : 1 / mm;
   const double flip = s.y_down ? -1 : 1; // v and exy change sign with the y axis
-  // The correlation's confidence interval in pixels (VIC's and DICe's sigma) is the noise here.
-  const double sigma = s.noise / s.pixel_size;
-  const char* unit = s.pixels ? "px" : "mm";
+  const dic::LayoutEntry& layout = dic::layout_entry(s.layout);
+  dic::FrameFileHeader h;
+  h.number = f.number;
+  h.time = f.time;
+  h.load = f.load;
+  h.opening_mm = f.opening / mm;
+  h.pixels = s.pixels;
+  h.y_down = s.y_down;
+  h.strain_window_mm = s.strain_window / mm;
   std::string t;
   t.reserve(grid.size() * 96 + 1024);
-  switch (s.layout) {
-  case DicLayout::vic:
-    t += "\"x\", \"y\", \"u\", \"v\", \"exx\", \"eyy\", \"exy\", \"sigma\"\n";
-    break;
-  case DicLayout::dice:
-    t += "***\n*** Digital Image Correlation Engine (DICe) solution file layout, written by the "
-         "fiberbridge virtual test\n*** (FEM displacements at the subset centroids plus noise, "
-         "not image correlation)\n***\n*** Reference image: frame 0 (undeformed)\n"
-         "*** Deformed image: frame " +
-         std::to_string(f.number) + " (t = " + num(f.time) + " s)\n*** Coordinates: " + unit +
-         (s.y_down ? ", y down" : ", y up") + "\n*** Strain: virtual strain gauge, window " +
-         num(s.strain_window / mm) + " mm\n***\n";
-    t += "SUBSET_ID,COORDINATE_X,COORDINATE_Y,DISPLACEMENT_X,DISPLACEMENT_Y,SIGMA,VSG_STRAIN_XX,"
-         "VSG_STRAIN_YY,VSG_STRAIN_XY\n";
-    break;
-  case DicLayout::gom: {
-    const std::string bar(100, '#');
-    t += "# Process data:\n# software                      : fiberbridge virtual test (GOM/ZEISS "
-         "nodemap layout)\n# stage                         : " +
-         std::to_string(f.number) + "\n# time [s]                      : " + num(f.time) + "\n" +
-         bar +
-         "\n# SIGNALS:\n# force [N]                     : value_element       : " + num(f.load) +
-         "\n# displacement [mm]             : value_element       : " + num(f.opening / mm) + "\n" +
-         bar + "\n";
-    t += "#        ID; x_undef [mm]; y_undef [mm]; z_undef [mm]; u [mm]; v [mm]; w [mm]; epsx [%]; "
-         "epsy [%]; epsxy [1]; epseqv [%]\n";
-    break;
-  }
-  }
+  layout.write_header(t, h);
+  dic::FramePoint p;
+  // The correlation's confidence interval in pixels (VIC's and DICe's sigma) is the noise here.
+  p.sigma = s.noise / s.pixel_size;
   for (std::size_t k = 0; k < grid.size(); ++k) {
-    const bool ok = f.strains.ok[k];
-    const double x = frame_x(s, grid, grid.x(k)), y = frame_y(s, grid, grid.y(k));
-    const double u = ok ? f.u[k] * to_len : 0, v = ok ? flip * f.v[k] * to_len : 0;
-    const double exx = ok ? f.strains.exx[k] : 0, eyy = ok ? f.strains.eyy[k] : 0,
-                 exy = ok ? flip * f.strains.exy[k] : 0;
-    switch (s.layout) {
-    case DicLayout::vic:
-      append_row(t, {x, y, u, v, exx, eyy, exy, ok ? sigma : -1.0}, ", ");
-      break;
-    case DicLayout::dice:
-      t += std::to_string(k) + ",";
-      append_row(t, {x, y, u, v, ok ? sigma : -1.0, exx, eyy, exy}, ",");
-      break;
-    case DicLayout::gom: {
-      if (!ok) // a facet that did not correlate is not in the nodemap
-        break;
-      // Von Mises equivalent of an in-plane, volume-preserving strain state.
-      const double eqv =
-          2 / std::sqrt(3.0) * std::sqrt(exx * exx + eyy * eyy + exx * eyy + exy * exy);
-      t += std::to_string(k + 1) + "; ";
-      append_row(t, {x, y, 0.0, u, v, 0.0, 100 * exx, 100 * eyy, exy, 100 * eqv}, "; ");
-      break;
-    }
-    }
+    p.index = k;
+    p.ok = f.strains.ok[k];
+    p.x = frame_x(s, grid, grid.x(k));
+    p.y = frame_y(s, grid, grid.y(k));
+    p.u = p.ok ? f.u[k] * to_len : 0;
+    p.v = p.ok ? flip * f.v[k] * to_len : 0;
+    p.exx = p.ok ? f.strains.exx[k] : 0;
+    p.eyy = p.ok ? f.strains.eyy[k] : 0;
+    p.exy = p.ok ? flip * f.strains.exy[k] : 0;
+    layout.write_point(t, p);
   }
   write_text(path, t);
 }

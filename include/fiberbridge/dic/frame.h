@@ -1,6 +1,6 @@
 #pragma once
 // One DIC frame: what DIC software exports for one image, read by header name with a preset per
-// layout (docs/design.md section 6, "DIC frames in"):
+// layout (docs/design.md section 6, "DIC frames in"; the layouts' table in layouts.h):
 //  - VIC-2D / VIC-3D CSV (Correlated Solutions): quoted headers such as "x", "y", "u", "v", "exx",
 //    "eyy", "exy", "sigma"; x, y, u, v in pixels, X, Y, U, V (VIC-3D, calibrated VIC-2D) in mm;
 //    blank lines between areas of interest; sigma < 0 marks a point that did not correlate.
@@ -16,6 +16,8 @@
 // The coordinates are reference (undeformed) positions in every layout: the points are material
 // points, which the extensometer relies on. Values stay in the file's units (mm or px) here; the
 // frame geometry (geometry.h) converts them. Strains are fractions once read.
+#include "fiberbridge/dic/layouts.h"
+
 #include <cmath>
 #include <cstddef>
 #include <map>
@@ -24,12 +26,6 @@
 #include <vector>
 
 namespace fiberbridge::dic {
-
-enum class Layout { automatic, vic, dice, gom, plain };
-
-/// "auto", "vic", "dice", "gom", "plain"; InputError naming `where` otherwise.
-Layout parse_layout(const std::string& text, const std::string& where);
-const char* layout_name(Layout layout);
 
 /// Which header of the frames holds each of our columns: x, y (reference coordinates), u, v
 /// (displacements), eyy (strain normal to the crack plane), valid (a confidence column: a

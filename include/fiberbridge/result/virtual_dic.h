@@ -15,27 +15,25 @@
 //                               Interface keys) and reduces them.
 // No deal.II here: the FEM samples its field (source/fem/virtual_dic.h); the layouts and the fit
 // are shared with any reader test that needs frames of a known field.
+#include "fiberbridge/dic/layouts.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace fiberbridge::result {
 
-/// The export layouts (issue 32's list).
-enum class DicLayout {
-  vic,  ///< VIC-2D CSV: quoted header "x", "y", "u", "v", "exx", "eyy", "exy", "sigma"; sigma < 0
-        ///< marks a point that did not correlate (written as -1 with zeros)
-  dice, ///< DICe solution file: "***" comment lines, then SUBSET_ID, COORDINATE_X/Y,
-        ///< DISPLACEMENT_X/Y, SIGMA (-1 failed), VSG_STRAIN_XX/YY/XY, comma delimited
-  gom   ///< GOM/ZEISS nodemap: '#' metadata, '#'-prefixed header, ';' delimited, strains in %,
-        ///< failed facets absent
-};
-/// "vic" | "dice" | "gom"; throws InputError naming `key` otherwise.
+/// The export layouts: the DIC library's table (dic/layouts.h), those with a writer.
+using DicLayout = dic::Layout;
+/// A layout with a writer by name; throws InputError naming `key` otherwise.
 DicLayout parse_dic_layout(const std::string& text, const std::string& key);
 const char* dic_layout_name(DicLayout layout);
-/// The frame file's extension with its dot: ".csv" (vic, gom) or ".txt" (dice, as DICe names its
-/// solution files).
+/// The frame file's extension with its dot (".csv"; ".txt" for dice, as DICe names its files).
 const char* dic_layout_extension(DicLayout layout);
+/// "vic|dice|gom|plain": the layouts the virtual test writes, for a Selection pattern.
+std::string dic_layout_selection();
+/// "vic (VIC-2D/3D CSV), ...": the same with their descriptions, for help texts.
+std::string dic_layout_descriptions();
 
 /// The virtual DIC system and testing machine (FEM section, subsection Virtual DIC; SI units).
 struct VirtualDicSettings {
