@@ -1,6 +1,8 @@
-// libFuzzer target: the DIC frame reader (dic/frame.h) in every layout and with a column map,
-// and what the analysis does with a frame that reads (crack coordinates, point spacing, the
-// crack-plane profile, the tip rule and the extensometer). Input: a frame file; a first line
+// libFuzzer target: the DIC frame reader (dic/frame.h) in every layout of the table (GOM's native
+// CSV with its stage block and units line, DICe's stated coordinates, the duplicate-point check
+// included) and with a column map, and what the analysis does with a frame that reads (crack
+// coordinates, point spacing, the crack-plane profile, the tip rule and the extensometer). Input: a
+// frame file; a first line
 // "#columns: MAP" (a comment to the reader, so bundled frames are valid inputs) is parsed as the
 // frame column map.
 #include "fiberbridge/dic/crack_tip.h"
@@ -8,11 +10,16 @@
 #include "fiberbridge/dic/frame.h"
 #include "fuzz_input.h"
 
+#include <vector>
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace fiberbridge;
   const std::string text = fuzz::as_text(data, size);
-  for (const auto layout : {dic::Layout::automatic, dic::Layout::vic, dic::Layout::dice,
-                            dic::Layout::gom, dic::Layout::plain})
+  // Every layout of the table (dic/layouts.h: GOM's nodemap and native CSV among them) and auto.
+  std::vector<dic::Layout> all{dic::Layout::automatic};
+  for (const auto* e : dic::layouts())
+    all.push_back(e->id);
+  for (const auto layout : all)
     for (const bool pixels : {false, true})
       fuzz::expect_success_or_input_error([&] {
         dic::FrameReadOptions o;

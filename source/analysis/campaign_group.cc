@@ -5,6 +5,7 @@
 #include "fiberbridge/analysis/campaign_statistics.h"
 #include "fiberbridge/analysis/line_fit.h"
 #include "fiberbridge/analysis/trilinear_fit.h"
+#include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
@@ -102,6 +103,63 @@ Interval make_interval(const CampaignOptions& o, std::size_t n, double v,
 
 double median(std::vector<double> v) {
   return sample_quantile(std::move(v), 0.5);
+}
+
+/// The cell of a specimen's R(delta) file farthest from the curve's median (in multiples of the
+/// median), as "file:line: R = ... J/m^2 at delta = ... mm"; empty when it cannot be told.
+std::string farthest_cell(const CampaignSpecimen& s) {
+  const auto& R = s.curve.R;
+  if (R.size() < 3)
+    return "";
+  std::vector<double> sorted(R);
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  std::size_t worst = 0;
+  for (std::size_t i = 1; i < R.size(); ++i)
+    if (std::abs(R[i] - median) > std::abs(R[worst] - median))
+      worst = i;
+  std::string where = s.row.file;
+  // The file's own line, when the file is the R(delta) table that row came from.
+  try {
+    const CsvTable t = CsvTable::read(s.row.file);
+    if (t.has_column("R_J_m2")) {
+      const auto file_R = t.numeric("R_J_m2");
+      for (std::size_t i = 0; i < file_R.size(); ++i)
+        if (file_R[i] == R[worst]) {
+          where += ":" + std::to_string(t.line_of_row(i));
+          break;
+        }
+    }
+  } catch (const std::exception&) {
+    // The message below still names the file and the value.
+  }
+  return where + ": R = " + fmt(R[worst]) + " J/m^2 at delta = " + fmt(s.curve.delta[worst] / mm) +
+         " mm (the curve's median is " + fmt(median) + " J/m^2)";
+}
+
+/// When a group of three or more specimens has no estimate but would have one without exactly
+/// one of them, that specimen is named with its farthest cell (issue 42: one R cell of 1e6 in
+/// six specimens dropped the group, and the note named neither specimen nor line).
+std::string single_spoiler(const CampaignGroup& group,
+                           const std::vector<CampaignSpecimen>& specimens,
+                           const CampaignOptions& o) {
+  if (group.members.size() < 3)
+    return "";
+  std::vector<std::size_t> spoilers;
+  for (std::size_t k = 0; k < group.members.size(); ++k) {
+    std::vector<std::size_t> others;
+    for (std::size_t j = 0; j < group.members.size(); ++j)
+      if (j != k)
+        others.push_back(group.members[j]);
+    if (estimate_group(specimens, others, o, false).ok)
+      spoilers.push_back(group.members[k]);
+  }
+  if (spoilers.size() != 1)
+    return "";
+  const CampaignSpecimen& s = specimens[spoilers.front()];
+  const std::string cell = farthest_cell(s);
+  return "the group estimates without specimen '" + s.row.specimen + "' (" + s.row.where() +
+         (cell.empty() ? "" : "; " + cell) + "): check that specimen's file";
 }
 
 } // namespace
@@ -302,8 +360,11 @@ void analyse_campaign_group(CampaignGroup& group, const std::vector<CampaignSpec
   group.estimate = estimate_group(specimens, group.members, o, true);
   group.seed = group_seed(o.seed, group.material, group.cycles);
   const std::string name = group.material + " at " + fmt(group.cycles) + " cycles";
-  if (!group.estimate.ok)
+  if (!group.estimate.ok) {
     group.notes.push_back(name + ": no estimate (" + group.estimate.failure + ")");
+    if (const std::string culprit = single_spoiler(group, specimens, o); !culprit.empty())
+      group.notes.push_back(name + ": " + culprit);
+  }
 
   // Specimens named in the notes (never dropped): no steady state of their own, or far from the
   // group (robust z of G_ss).

@@ -5,6 +5,7 @@
 #include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -16,6 +17,11 @@
 namespace fiberbridge::analysis {
 
 namespace {
+
+/// Beyond this, a cycle count is a slip (moisture cycles are counted in tens).
+constexpr double max_cycles = 1e6;
+/// File names hold "campaign_degradation_" + this + "_c<cycles>.csv": 255 bytes is the limit.
+constexpr std::size_t max_material_file_part = 120;
 
 std::string trim(const std::string& s) {
   return trim_blanks(s);
@@ -37,6 +43,26 @@ double optional_positive(const CsvTable& t, const std::string& column, std::size
                      "cell, got '" +
                      v + "'");
   return x * unit;
+}
+
+/// Two materials whose names become the same file-name part ("PF 1" and "PF_1", "X/Y" and
+/// "X:Y") would overwrite each other's law and degradation files; a name too long for a file
+/// name would fail only after every group ran (issue 42). Both refused before anything runs.
+void refuse_colliding_materials(const CampaignManifest& m) {
+  std::map<std::string, const CampaignRow*> by_part;
+  for (const auto& r : m.rows) {
+    const std::string part = campaign_file_part(r.material);
+    if (part.size() > max_material_file_part)
+      throw InputError(r.where() + ": material name of " + std::to_string(r.material.size()) +
+                       " characters; expected at most " + std::to_string(max_material_file_part) +
+                       " (it is part of file names)");
+    const auto [it, fresh] = by_part.emplace(part, &r);
+    if (!fresh && it->second->material != r.material)
+      throw InputError(r.where() + ": material '" + r.material + "' and '" + it->second->material +
+                       "' (" + it->second->where() + ") become the same file names ('" + part +
+                       "'; letters, digits, '-' and '_' are kept, anything else is '_'): rename "
+                       "one of them");
+  }
 }
 
 } // namespace
@@ -71,9 +97,12 @@ CampaignManifest read_campaign_manifest(const std::string& path) {
     const std::string c = trim(t.text("cycles")[i]);
     char* end = nullptr;
     r.cycles = std::strtod(c.c_str(), &end);
-    if (c.empty() || *end != '\0' || !std::isfinite(r.cycles) || r.cycles < 0)
-      throw InputError(where + ": cycles: expected a number of moisture cycles >= 0, got '" + c +
-                       "'");
+    // Moisture cycles are counted in tens; far beyond, the degradation fit's sums overflow
+    // (1e300 gave a slope of 0 without a word, issue 42).
+    if (c.empty() || *end != '\0' || !std::isfinite(r.cycles) || r.cycles < 0 ||
+        r.cycles > max_cycles)
+      throw InputError(where + ": cycles: expected a number of moisture cycles from 0 to " +
+                       fmt(max_cycles) + ", got '" + c + "'");
     const std::filesystem::path f(r.file_as_written);
     r.file = (f.is_absolute() ? f : folder / f).lexically_normal().string();
     if (!std::filesystem::is_regular_file(r.file) && !std::filesystem::is_directory(r.file))
@@ -101,7 +130,15 @@ CampaignManifest read_campaign_manifest(const std::string& path) {
     seen_file.emplace(canonical, r.line);
     m.rows.push_back(r);
   }
+  refuse_colliding_materials(m);
   return m;
+}
+
+std::string campaign_file_part(const std::string& material) {
+  std::string o;
+  for (char c : material)
+    o += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
+  return o;
 }
 
 const char* to_string(SpecimenInput k) {

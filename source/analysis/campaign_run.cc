@@ -2,6 +2,7 @@
 #include "fiberbridge/analysis/campaign_run.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 
 #include <algorithm>
 #include <set>
@@ -33,6 +34,19 @@ CampaignResult analyse_campaign(const CampaignManifest& manifest, const RawRecor
       if (progress)
         progress(i + 1, r.groups.size(), r.groups[i]);
     }
+  // A campaign with no estimate at all has no Table 1, laws or ranking: that is a failed run,
+  // not a result (issue 42: delta_c_mm written in micrometres exited 0 with an empty table).
+  if (!r.groups.empty() &&
+      std::none_of(r.groups.begin(), r.groups.end(), [](const auto& g) { return g.estimate.ok; })) {
+    std::string why;
+    for (std::size_t i = 0; i < r.groups.size() && i < 3; ++i)
+      why += (i ? "; " : "") + r.groups[i].material + " at " + fmt(r.groups[i].cycles) +
+             " cycles: " + r.groups[i].estimate.failure;
+    throw ComputationError(manifest.source + ": no group of the campaign could be estimated (" +
+                           why + (r.groups.size() > 3 ? "; ..." : "") +
+                           "); check the manifest's per-specimen columns (delta_c_mm in mm, "
+                           "j_tip_J_m2 in J/m^2) and the specimens' files");
+  }
   std::set<std::string> materials;
   for (const auto& g : r.groups)
     materials.insert(g.material);

@@ -475,3 +475,124 @@ TEST(CampaignSpecimen, RawRecordWithDeltaRootGivesRDelta) {
   EXPECT_TRUE(std::isfinite(b.plateau));
   EXPECT_TRUE(std::isfinite(b.initiation));
 }
+
+// Issue 42's campaign findings. Materials whose names become the same file names ("PF 1" and
+// "PF_1", "X/Y" and "X:Y"), a name too long for a file name, and a cycle count the degradation
+// fit cannot take are refused with the manifest's line before anything runs.
+TEST(CampaignManifest, CollidingMaterialNamesLongNamesAndHugeCyclesAreRefused) {
+  const fs::path d = scratch("collide");
+  const auto truth = table1_truth(read_property_table(table1));
+  SyntheticCampaignOptions so;
+  so.replicates = 2;
+  write_synthetic_campaign(d.string(), {truth[0]}, so);
+  auto expect_error = [&](const std::string& text, const std::string& what) {
+    write(d / "m.csv", text);
+    try {
+      read_campaign_manifest((d / "m.csv").string());
+      ADD_FAILURE() << "no error for: " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  const std::string head = "file,material,cycles,specimen\n";
+  expect_error(head + "PVA_c0_s1.csv,PF 1,0,a\nPVA_c0_s2.csv,PF_1,0,b\n",
+               "m.csv:3: material 'PF_1' and 'PF 1'");
+  expect_error(head + "PVA_c0_s1.csv,X/Y,0,a\nPVA_c0_s2.csv,X:Y,0,b\n", "same file names");
+  expect_error(head + "PVA_c0_s1.csv," + std::string(300, 'M') + ",0,a\n",
+               "m.csv:2: material name of 300 characters");
+  expect_error(head + "PVA_c0_s1.csv,PVA,1e300,a\n", "m.csv:2: cycles");
+  // The same material on several lines is one name, not a collision.
+  write(d / "m.csv", head + "PVA_c0_s1.csv,PF 1,0,a\nPVA_c0_s2.csv,PF 1,0,b\n");
+  EXPECT_EQ(read_campaign_manifest((d / "m.csv").string()).rows.size(), 2u);
+}
+
+// A campaign where no group can be estimated (delta_c_mm written in micrometres) is a failed
+// run, not an empty Table 1 with exit 0.
+TEST(CampaignRun, NoGroupEstimatedIsAnError) {
+  const fs::path d = scratch("none");
+  const auto truth = table1_truth(read_property_table(table1));
+  SyntheticCampaignOptions so;
+  so.replicates = 3;
+  write_synthetic_campaign(d.string(), {truth[0]}, so);
+  write(d / "m.csv", "file,material,cycles,specimen,delta_c_mm\nPVA_c0_s1.csv,PVA,0,a,6000\n"
+                     "PVA_c0_s2.csv,PVA,0,b,6000\nPVA_c0_s3.csv,PVA,0,c,6000\n");
+  CampaignOptions o;
+  o.bootstrap_samples = 0;
+  try {
+    analyse_campaign(read_campaign_manifest((d / "m.csv").string()), {}, o, {});
+    ADD_FAILURE() << "a campaign without any estimate passed";
+  } catch (const ComputationError& e) {
+    EXPECT_NE(std::string(e.what()).find("no group of the campaign could be estimated"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// One bad R cell (1e6 J/m^2) in one of the group's specimens: the group's note names that
+// specimen, its manifest line, its file and the cell's line.
+TEST(CampaignGroup, OneBadCellNamesTheSpecimenFileAndLine) {
+  const fs::path d = scratch("bad_cell");
+  const auto truth = table1_truth(read_property_table(table1));
+  SyntheticCampaignOptions so;
+  so.replicates = 4;
+  const std::string m = write_synthetic_campaign(d.string(), {truth[0]}, so);
+  // Spoil one R cell of the third specimen's file, as a typo would (the file as written).
+  const fs::path f = d / "PVA_c0_s3.csv";
+  std::ifstream in(f);
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(in, l);)
+    lines.push_back(l);
+  in.close();
+  auto cells = [](const std::string& l) {
+    std::vector<std::string> c;
+    std::size_t b = 0;
+    for (std::size_t e; (e = l.find(',', b)) != std::string::npos; b = e + 1)
+      c.push_back(l.substr(b, e - b));
+    c.push_back(l.substr(b));
+    return c;
+  };
+  std::size_t r_col = std::string::npos, spoiled_line = 0;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i].empty() || lines[i][0] == '#')
+      continue;
+    auto c = cells(lines[i]);
+    if (r_col == std::string::npos) {
+      r_col = std::find(c.begin(), c.end(), "R_J_m2") - c.begin();
+      ASSERT_LT(r_col, c.size()) << lines[i];
+      continue;
+    }
+    if (i < lines.size() / 2)
+      continue;
+    c[r_col] = "1000000";
+    std::string joined;
+    for (std::size_t k = 0; k < c.size(); ++k)
+      joined += (k ? "," : "") + c[k];
+    lines[i] = joined;
+    spoiled_line = i + 1;
+    break;
+  }
+  ASSERT_GT(spoiled_line, 0u);
+  std::ofstream out(f);
+  for (const auto& l : lines)
+    out << l << "\n";
+  out.close();
+  CampaignOptions o;
+  o.bootstrap_samples = 0;
+  const auto manifest = read_campaign_manifest(m);
+  std::vector<CampaignSpecimen> specimens;
+  for (const auto& row : manifest.rows) {
+    specimens.push_back(load_campaign_specimen(row, {}));
+    assess_campaign_specimen(specimens.back(), o);
+  }
+  auto groups = make_campaign_groups(specimens);
+  ASSERT_EQ(groups.size(), 1u);
+  analyse_campaign_group(groups[0], specimens, o);
+  if (groups[0].estimate.ok)
+    GTEST_SKIP() << "the spoiled cell did not stop the estimate here";
+  std::string notes;
+  for (const auto& n : groups[0].notes)
+    notes += n + "\n";
+  EXPECT_NE(notes.find("without specimen"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("PVA_c0_s3.csv:" + std::to_string(spoiled_line)), std::string::npos)
+      << notes;
+}

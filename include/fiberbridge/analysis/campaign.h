@@ -87,6 +87,10 @@ struct CampaignSpecimen {
   std::vector<std::string> notes;         ///< why not steady, and what else to know
 };
 
+/// A material name as a part of file names: letters, digits, '-' and '_' kept, anything else
+/// '_'. The manifest refuses two materials with the same part.
+std::string campaign_file_part(const std::string& material);
+
 /// Reads one row's file. An R(delta) file must hold one replicate (one specimen per row); a raw
 /// record file one record. Errors name the manifest line and the file.
 CampaignSpecimen load_campaign_specimen(const CampaignRow& row, const RawRecordOptions& raw);
