@@ -105,12 +105,17 @@ double median(std::vector<double> v) {
   return sample_quantile(std::move(v), 0.5);
 }
 
-/// The cell of a specimen's R(delta) file farthest from the curve's median (in multiples of the
-/// median), as "file:line: R = ... J/m^2 at delta = ... mm"; empty when it cannot be told.
-std::string farthest_cell(const CampaignSpecimen& s) {
+/// The cell of a specimen's R(delta) curve farthest from the curve's median, in multiples of
+/// the median (`ratio`), and where it is: "file:line: R = ... J/m^2 at delta = ... mm".
+struct FarCell {
+  double ratio = 0;
+  std::string text;
+};
+
+FarCell farthest_cell(const CampaignSpecimen& s) {
   const auto& R = s.curve.R;
   if (R.size() < 3)
-    return "";
+    return {};
   std::vector<double> sorted(R);
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   const double median = sorted[sorted.size() / 2];
@@ -131,35 +136,47 @@ std::string farthest_cell(const CampaignSpecimen& s) {
         }
     }
   } catch (const std::exception&) {
-    // The message below still names the file and the value.
+    // The message still names the file and the value.
   }
-  return where + ": R = " + fmt(R[worst]) + " J/m^2 at delta = " + fmt(s.curve.delta[worst] / mm) +
-         " mm (the curve's median is " + fmt(median) + " J/m^2)";
+  FarCell c;
+  c.ratio = median > 0 ? std::abs(R[worst] - median) / median : 0;
+  c.text = where + ": R = " + fmt(R[worst]) +
+           " J/m^2 at delta = " + fmt(s.curve.delta[worst] / mm) + " mm (the curve's median is " +
+           fmt(median) + " J/m^2)";
+  return c;
 }
 
-/// When a group of three or more specimens has no estimate but would have one without exactly
-/// one of them, that specimen is named with its farthest cell (issue 42: one R cell of 1e6 in
-/// six specimens dropped the group, and the note named neither specimen nor line).
+/// A group without estimate that has one under a leave-one-out: the specimen whose removal
+/// restores it and whose farthest cell is farthest off, named with that cell (issue 42: one R
+/// cell of 1e6 in six specimens dropped the group, and the note named neither specimen nor
+/// line). Removing a sound specimen of a marginal group may restore it too: the cell decides.
 std::string single_spoiler(const CampaignGroup& group,
                            const std::vector<CampaignSpecimen>& specimens,
                            const CampaignOptions& o) {
   if (group.members.size() < 3)
     return "";
-  std::vector<std::size_t> spoilers;
+  const CampaignSpecimen* worst = nullptr;
+  FarCell worst_cell;
   for (std::size_t k = 0; k < group.members.size(); ++k) {
     std::vector<std::size_t> others;
     for (std::size_t j = 0; j < group.members.size(); ++j)
       if (j != k)
         others.push_back(group.members[j]);
-    if (estimate_group(specimens, others, o, false).ok)
-      spoilers.push_back(group.members[k]);
+    if (!estimate_group(specimens, others, o, false).ok)
+      continue;
+    const CampaignSpecimen& s = specimens[group.members[k]];
+    const FarCell c = farthest_cell(s);
+    if (!worst || c.ratio > worst_cell.ratio) {
+      worst = &s;
+      worst_cell = c;
+    }
   }
-  if (spoilers.size() != 1)
+  if (!worst)
     return "";
-  const CampaignSpecimen& s = specimens[spoilers.front()];
-  const std::string cell = farthest_cell(s);
-  return "the group estimates without specimen '" + s.row.specimen + "' (" + s.row.where() +
-         (cell.empty() ? "" : "; " + cell) + "): check that specimen's file";
+  return "the group estimates without specimen '" + worst->row.specimen + "' (" +
+         worst->row.where() +
+         (worst_cell.text.empty() ? "" : "; farthest cell " + worst_cell.text) +
+         "): check that specimen's file";
 }
 
 } // namespace
