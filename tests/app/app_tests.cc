@@ -366,7 +366,7 @@ TEST(BadInput, RecordMissingColumn) {
   // The map names a crack column the file does not have: an error naming it and the headers
   // found (a record without any crack column is read against the equivalent crack, issue 31).
   expect_bad_record("missing_column.csv", "missing_column.csv:1: no column 'Crack length (mm)' "
-                                          "for a_mm (headers found: 'Time (s)'");
+                                          "for a_mm (headers found: #1 'Time (s)'");
 }
 TEST(BadInput, RecordNotANumber) {
   // A cell that is not a number is refused at its line; a NaN cell is a dropout (below).

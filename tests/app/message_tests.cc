@@ -90,7 +90,7 @@ TEST(CommandMessages, TheCommandIsNamedOnce) {
 TEST(SceneMessages, AnEmptyOutputDirectoryIsNamed) {
   const std::string d = work_dir("empty_out");
   const std::string prm = d + "/scene.prm";
-  std::ofstream(prm) << "set Output directory =\nset Run = rank\n";
+  std::ofstream(prm) << "set Output directory =\nset Run = beam\n";
   const auto [rc, err] = run({"run", prm});
   EXPECT_NE(rc, 0);
   EXPECT_NE(err.find("Output directory is empty"), std::string::npos) << err;
@@ -110,9 +110,10 @@ TEST(SceneMessages, AnUnknownItemIsCalledUnknown) {
   EXPECT_NE(e.find("unknown Run item 'ank'"), std::string::npos) << e;
 }
 
-// A subnormal Double printed deal.II's internal error with a stack trace.
+// A subnormal Double printed deal.II's internal error with a stack trace. (An overflowing 1e400 is
+// refused by deal.II's own Double pattern before it reaches us, with its own message.)
 TEST(SceneMessages, ASubnormalNumberNamesKeyAndValue) {
-  for (const std::string& v : {"1e-320", "1e400"}) {
+  for (const std::string& v : {"1e-320", "4.9e-324"}) {
     const std::string e =
         scene_error(scene_file("subnormal", "subsection DIC\n  set Frame rate = " + v + "\nend\n"));
     EXPECT_NE(e.find("DIC/Frame rate = " + v), std::string::npos) << e;
