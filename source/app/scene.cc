@@ -1,4 +1,5 @@
 #include "fiberbridge/app/scene.h"
+#include "chain_study_item.h"
 
 #include "fiberbridge/app/analysis_steps.h"
 #include "fiberbridge/app/items.h"
@@ -55,6 +56,11 @@ const std::vector<SceneItem>& scene_items() {
                            &check_compare_item, &run_compare_item},
                           {"study", &declare_study_section, &parse_study_section, &check_study_item,
                            &run_study_item},
+                          {"chain study", &declare_chain_study_section, &parse_chain_study_section,
+                           &check_chain_study_item, &run_chain_study_item},
+                          {"programme study", &declare_programme_study_section,
+                           &parse_programme_study_section, &check_programme_study_item,
+                           &run_programme_study_item},
                       });
     return v;
   }();
@@ -66,7 +72,7 @@ namespace {
 /// Every item a scene may list, built or not.
 const std::string all_item_names =
     "dic, reduce, identify, extract, fit, rank, bridging, campaign, " + model_names() +
-    ", compare, study";
+    ", compare, study, chain study, programme study";
 
 void declare_everything(dealii::ParameterHandler& prm) {
   prm.declare_entry("Output directory", "output", dealii::Patterns::Anything(),
