@@ -1,9 +1,9 @@
-// Scene item `programme study` (issue 39 item 5; docs/design.md, "The programme, simulated"): the
-// seed's experiment run end to end with known answers. From the Table 1 laws it makes a campaign
-// of virtual specimens (each group's sigma1 and sigma2 scattered around its law, a fixed seed),
-// each specimen a FEM virtual test (FEM/Virtual DIC) and so a DIC set (a manifest row whose file
-// is a folder), then runs the campaign item on that manifest through the scene runner as a user
-// would, and compares the groups' laws and intervals with the truth. The campaign's time is
+// Scene item `programme study` (issue 39 item 5; docs/design.md section 3, "The programme,
+// simulated"): the seed's experiment run end to end with known answers. From the Table 1 laws it
+// makes a campaign of virtual specimens (each group's sigma1 and sigma2 scattered around its law, a
+// fixed seed), each specimen a FEM virtual test (FEM/Virtual DIC) and so a DIC set (a manifest row
+// whose file is a folder), then runs the campaign item on that manifest through the scene runner as
+// a user would, and compares the groups' laws and intervals with the truth. The campaign's time is
 // measured apart from the FEM's.
 #include "chain_study_item.h"
 #include "programme_study_writers.h"
