@@ -7,6 +7,7 @@
 // of the table with its reason, never a failure of the study.
 #include "chain_study_cases.h"
 #include "chain_study_writers.h"
+#include "virtual_test_run.h"
 
 #include "chain_study_item.h"
 #include "fiberbridge/app/items.h"
@@ -36,6 +37,7 @@ struct ChainStudySection {
   std::string cases;
   std::string table1;
   std::string chain_run;
+  bool reuse = true;
 
   static void declare_parameters(dealii::ParameterHandler& prm) {
     prm.declare_entry("Cases", "all", dealii::Patterns::Anything(),
@@ -46,6 +48,10 @@ struct ChainStudySection {
     prm.declare_entry("Table 1", "data/reference/seed_table1.csv", dealii::Patterns::Anything(),
                       "The laws of the Table 1 cases (seed_table1.csv's format), relative to the "
                       "working directory or the scene file.");
+    prm.declare_entry("Reuse virtual tests", "true", dealii::Patterns::Bool(),
+                      "Keep a case's virtual test from an earlier run into the same output "
+                      "directory when it was made from the same scene text and settings: the FEM "
+                      "does not change when the chain's estimators do (the chain always runs).");
     prm.declare_entry("Chain run", "dic, reduce, extract, fit", dealii::Patterns::Anything(),
                       "The Run list set on each generated dic_scene.prm: the chain as a user runs "
                       "it on a virtual test.");
@@ -54,6 +60,7 @@ struct ChainStudySection {
     cases = prm.get("Cases");
     table1 = prm.get("Table 1");
     chain_run = prm.get("Chain run");
+    reuse = prm.get_bool("Reuse virtual tests");
   }
 };
 
@@ -159,15 +166,9 @@ ChainRow run_case(const SceneContext& ctx, const ChainStudySection& section, con
   const std::string dir = ctx.out("cases/" + c.name);
   const std::string fem_dir = fs::absolute(dir + "/fem").string();
   const std::string chain_dir = fs::absolute(dir + "/chain").string();
-  // The scene file with its --set settings, the case's on top, as `fiberbridge run --set` would.
-  std::vector<std::string> fem_sets = ctx.parameters().overrides;
-  fem_sets.insert(fem_sets.end(), c.sets.begin(), c.sets.end());
-  fem_sets.push_back("Run=fem");
-  fem_sets.push_back("Output directory=" + fem_dir);
-  fem_sets.push_back("FEM/Virtual DIC/Enabled=true");
   auto t0 = std::chrono::steady_clock::now();
   try {
-    run_scene(ctx.scene_file, fem_sets);
+    run_virtual_test(ctx, c.sets, fem_dir, section.reuse);
   } catch (const std::exception& e) {
     row.outcome = "fem_failed";
     row.stage = "fem";

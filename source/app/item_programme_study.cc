@@ -7,6 +7,7 @@
 // measured apart from the FEM's.
 #include "chain_study_item.h"
 #include "programme_study_writers.h"
+#include "virtual_test_run.h"
 
 #include "fiberbridge/analysis/campaign_synthetic.h"
 #include "fiberbridge/app/scene.h"
@@ -121,26 +122,6 @@ std::vector<Specimen> make_specimens(const std::vector<analysis::SyntheticGroupT
   return out;
 }
 
-/// The specimen's virtual test into `dir`, unless an earlier run left one made with the same
-/// settings (the stamp file). Returns true when the FEM ran.
-bool make_virtual_test(const SceneContext& ctx, const Specimen& p, const std::string& dir,
-                       bool reuse) {
-  std::vector<std::string> sets = ctx.parameters().overrides;
-  sets.insert(sets.end(), p.sets.begin(), p.sets.end());
-  sets.push_back("Run=fem");
-  sets.push_back("Output directory=" + dir);
-  sets.push_back("FEM/Virtual DIC/Enabled=true");
-  std::string stamp = read_text(ctx.scene_file) + "\n";
-  for (const auto& s : sets)
-    stamp += s + "\n";
-  const std::string stamp_file = dir + "/programme_stamp.txt";
-  if (reuse && fs::exists(dir + "/virtual_test/dic_scene.prm") && read_text(stamp_file) == stamp)
-    return false;
-  run_scene(ctx.scene_file, sets);
-  std::ofstream(stamp_file) << stamp;
-  return true;
-}
-
 /// The campaign's scene: the first set's dic_scene.prm (its Specimen, Material, DIC and Test
 /// sections hold for every set: they are laid out alike) with the Campaign section added.
 std::string write_campaign_scene(const std::string& first_set, const std::string& manifest,
@@ -240,7 +221,7 @@ void run_programme_study_item(SceneContext& ctx) {
                  fmt(s.stress_cv) + " z, seed " + std::to_string(s.seed) + ")"});
     for (const auto& p : specimens) {
       const std::string dir = sets_dir + "/" + p.name;
-      o.n_generated += make_virtual_test(ctx, p, dir, s.reuse);
+      o.n_generated += run_virtual_test(ctx, p.sets, dir, s.reuse);
       ++o.n_sets;
       std::cout << "programme study: " << p.name << " ready" << std::endl;
       m.row({p.name + "/virtual_test", p.material, p.label}, {p.cycles, p.dc});
