@@ -13,6 +13,9 @@ namespace {
 
 /// The band's scatter of neighbouring estimates is taken over this many windows (centred).
 constexpr double scatter_windows = 4;
+/// Half-width of the intervals the adaptive windows intersect, in standard errors: 2 keeps a
+/// window only while the wider slope agrees with every narrower one at about 95 %.
+constexpr double ici_width = 2;
 
 /// Local straight lines of y against x over windows [begin, end) in O(1) each: prefix sums of
 /// the samples taken about their overall means, so that window sums far from the origin keep
@@ -52,6 +55,19 @@ public:
     return {k, std::sqrt(ss / (n - 2) / Sxx)};
   }
 
+  /// Sum of squares of x about its mean over [b, e) (0 below 3 points).
+  double spread(std::size_t b, std::size_t e) const {
+    if (e - b < 3)
+      return 0;
+    const double n = static_cast<double>(e - b), mx = (sx_[e] - sx_[b]) / n;
+    return sxx_[e] - sxx_[b] - n * mx * mx;
+  }
+  /// Residual standard deviation of the line over [b, e); NaN below 3 points.
+  double residual_sd(std::size_t b, std::size_t e) const {
+    const auto [k, se] = slope(b, e);
+    return std::isfinite(se) ? se * std::sqrt(spread(b, e)) : NAN;
+  }
+
 private:
   double x0_ = 0, y0_ = 0;
   std::vector<double> sx_, sy_, sxx_, sxy_, syy_;
@@ -70,14 +86,16 @@ std::vector<double> dissipated_energy(const TestRecord& rec) {
   return D;
 }
 
-EnergySlopes energy_slopes(const std::vector<double>& a, const std::vector<double>& D,
-                           double window) {
+namespace {
+
+/// The band and slopes for a window per point (energy_slopes and energy_slopes_adaptive).
+EnergySlopes slopes_with_windows(const WindowLines& lines, const std::vector<double>& a,
+                                 const std::vector<double>& window) {
   // Two estimates at every point: the slope over the window w and over 2 w. Where R is locally
   // linear over 2 w both are unbiased, and their difference measures the scatter of the w
   // estimate that the 2 w one averages out: reading noise (then close to the standard error) and
   // tracking errors correlated over a few mm, which the residual-based standard error of one
   // window cannot see because they bend D(a) smoothly inside it.
-  const WindowLines lines(a, D);
   auto window_of = [&](double x, double w) {
     const auto lo = std::lower_bound(a.begin(), a.end(), x - w / 2) - a.begin();
     const auto hi = std::upper_bound(a.begin(), a.end(), x + w / 2) - a.begin();
@@ -88,9 +106,9 @@ EnergySlopes energy_slopes(const std::vector<double>& a, const std::vector<doubl
   std::vector<double> slope(n, NAN), slope_se(n, NAN);
   std::vector<double> diff2_sum(n + 1, 0.0), diff_count(n + 1, 0.0);
   for (std::size_t j = 0; j < n; ++j) {
-    const auto [b, e] = window_of(a[j], window);
+    const auto [b, e] = window_of(a[j], window[j]);
     std::tie(slope[j], slope_se[j]) = lines.slope(b, e);
-    const auto [b2, e2] = window_of(a[j], 2 * window);
+    const auto [b2, e2] = window_of(a[j], 2 * window[j]);
     const double wide = lines.slope(b2, e2).first;
     const bool ok = std::isfinite(slope[j]) && std::isfinite(wide);
     diff2_sum[j + 1] = diff2_sum[j] + (ok ? std::pow(slope[j] - wide, 2) : 0.0);
@@ -98,6 +116,7 @@ EnergySlopes energy_slopes(const std::vector<double>& a, const std::vector<doubl
   }
   EnergySlopes out;
   out.slope = slope;
+  out.window = window;
   out.lo.resize(n);
   out.hi.resize(n);
   for (std::size_t j = 0; j < n; ++j) {
@@ -109,7 +128,7 @@ EnergySlopes energy_slopes(const std::vector<double>& a, const std::vector<doubl
     // Why two windows: the RMS over one window either side rests on few independent differences
     // when the errors are correlated and scatters with them (docs/verification.md, "Test
     // records": coverage measured both ways).
-    const auto [nb, ne] = window_of(a[j], scatter_windows * window);
+    const auto [nb, ne] = window_of(a[j], scatter_windows * window[j]);
     const double n_diff = diff_count[ne] - diff_count[nb];
     const double scatter =
         n_diff > 0 ? std::sqrt((diff2_sum[ne] - diff2_sum[nb]) / n_diff * 4.0 / 3.0) : slope_se[j];
@@ -118,6 +137,60 @@ EnergySlopes energy_slopes(const std::vector<double>& a, const std::vector<doubl
     out.hi[j] = slope[j] + half;
   }
   return out;
+}
+
+} // namespace
+
+EnergySlopes energy_slopes(const std::vector<double>& a, const std::vector<double>& D,
+                           double window) {
+  return slopes_with_windows(WindowLines(a, D), a, std::vector<double>(a.size(), window));
+}
+
+EnergySlopes energy_slopes_adaptive(const std::vector<double>& a, const std::vector<double>& D,
+                                    double w_min, double w_max) {
+  const WindowLines lines(a, D);
+  const std::size_t n = a.size();
+  auto bounds = [&](double x, double w) {
+    return std::pair<std::size_t, std::size_t>(
+        static_cast<std::size_t>(std::lower_bound(a.begin(), a.end(), x - w / 2) - a.begin()),
+        static_cast<std::size_t>(std::upper_bound(a.begin(), a.end(), x + w / 2) - a.begin()));
+  };
+  // The noise of D about a smooth curve: the median over the points of the residual standard
+  // deviation of the narrowest lines. On a clean record it is the curvature left in w_min (and
+  // the windows stay narrow); on a noisy one it is the noise, and the windows grow where R is
+  // straight enough for the wider slope to agree with the narrower ones.
+  std::vector<double> sd;
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto [b, e] = bounds(a[j], w_min);
+    const double s = lines.residual_sd(b, e);
+    if (std::isfinite(s))
+      sd.push_back(s);
+  }
+  std::vector<double> window(n, w_max);
+  if (sd.empty())
+    return slopes_with_windows(lines, a, window);
+  std::nth_element(sd.begin(), sd.begin() + sd.size() / 2, sd.end());
+  const double sigma = sd[sd.size() / 2];
+  for (std::size_t j = 0; j < n; ++j) {
+    // Intersection of confidence intervals over windows growing by sqrt(2): the widest window
+    // whose slope +- ici_width standard errors (from sigma) still overlaps every narrower one.
+    double lo = -INFINITY, hi = INFINITY;
+    double chosen = NAN;
+    for (double w = w_min; w <= w_max * (1 + 1e-9); w *= std::sqrt(2.0)) {
+      const auto [b, e] = bounds(a[j], w);
+      const double k = lines.slope(b, e).first, Sxx = lines.spread(b, e);
+      if (!std::isfinite(k) || !(Sxx > 0))
+        continue;
+      const double se = sigma / std::sqrt(Sxx);
+      lo = std::max(lo, k - ici_width * se);
+      hi = std::min(hi, k + ici_width * se);
+      if (lo > hi)
+        break;
+      chosen = w;
+    }
+    window[j] = std::isfinite(chosen) ? chosen : w_max;
+  }
+  return slopes_with_windows(lines, a, window);
 }
 
 std::vector<double> isotonic(const std::vector<double>& y) {

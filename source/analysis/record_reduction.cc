@@ -26,6 +26,10 @@ namespace {
 /// over which those R curves rise.
 constexpr double readings_per_window = 10;
 constexpr double arm_thicknesses_per_window = 4;
+/// The automatic window above is the widest the data-chosen windows may take
+/// (energy_slopes_adaptive); the narrowest spans this many reading spacings (6 readings: 4
+/// degrees of freedom for the residuals that estimate the noise).
+constexpr double readings_per_narrowest_window = 5;
 constexpr std::size_t min_readings = 5;
 std::string num(double v) {
   std::ostringstream s;
@@ -87,9 +91,34 @@ struct Setup {
   }
 };
 
-/// Automatic window of the energy slopes for reading spacing `spacing`.
+/// Median spacing of a sorted abscissa (0 for fewer than 2 values).
+double median_step(const std::vector<double>& a) {
+  std::vector<double> d;
+  for (std::size_t j = 1; j < a.size(); ++j)
+    d.push_back(a[j] - a[j - 1]);
+  return d.empty() ? 0.0 : median(d);
+}
+
+/// Automatic window of the energy slopes for reading spacing `spacing`: the widest the
+/// data-chosen windows may take.
 double auto_window(double spacing, double h) {
   return std::max(readings_per_window * spacing, arm_thicknesses_per_window * h);
+}
+
+/// Energy slopes with the user's window, or (automatic) a window chosen at each reading from the
+/// data between 5 reading spacings and auto_window (energy_rate.h). `window` is the user's
+/// window or NaN; `reported` takes the median window used.
+EnergySlopes slopes_of(const std::vector<double>& a, const std::vector<double>& D, double window,
+                       double spacing, double h, double& reported) {
+  if (!std::isnan(window)) {
+    reported = window;
+    return energy_slopes(a, D, window);
+  }
+  const double w_max = auto_window(spacing, h);
+  EnergySlopes e = energy_slopes_adaptive(
+      a, D, std::min(w_max, readings_per_narrowest_window * spacing), w_max);
+  reported = median(e.window);
+  return e;
 }
 
 /// Times between fresh readings over which monotone_crack fits its local lines: the readings
@@ -130,11 +159,13 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
   std::vector<double> spacing;
   for (std::size_t j = 1; j < ar.size(); ++j)
     spacing.push_back(ar[j] - ar[j - 1]);
-  out.window =
-      std::isnan(o.smoothing_window) ? auto_window(median(spacing), s.h) : o.smoothing_window;
-  if (!(out.window > 0))
+  const double reading_spacing = median(spacing);
+  if (!(o.smoothing_window > 0) && !std::isnan(o.smoothing_window))
     throw InputError(src + ": the smoothing window must be > 0 mm, got " +
-                     num(out.window / units::mm));
+                     num(o.smoothing_window / units::mm));
+  if (std::isnan(o.smoothing_window) && !(auto_window(reading_spacing, s.h) > 0))
+    throw InputError(src + ": the automatic smoothing window is 0 mm (no spacing between the "
+                           "crack readings and no arm thickness)");
 
   // Compliance fits over the readings beyond a0.
   std::vector<double> a_fit, cbrt_C, log_a, log_C, a_over_H;
@@ -161,7 +192,8 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
   // Direct energy: D and a at the fresh readings (as read), and with a from the monotone smooth
   // crack (energy_rate.h) at the same rows. The window is centred on each reading, so it always
   // spans whole reading steps.
-  const EnergySlopes as_read = energy_slopes(ar, Dr, out.window);
+  const EnergySlopes as_read =
+      slopes_of(ar, Dr, o.smoothing_window, reading_spacing, s.h, out.window);
   std::vector<double> gaps;
   for (std::size_t j = 1; j < readings.size(); ++j)
     gaps.push_back(rec.time.empty() ? double(readings[j] - readings[j - 1])
@@ -171,8 +203,12 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
   std::vector<double> am;
   for (std::size_t k : readings)
     am.push_back(smooth[k]);
-  const EnergySlopes monotone = energy_slopes(am, Dr, out.window);
+  double monotone_window = NAN;
+  const EnergySlopes monotone =
+      slopes_of(am, Dr, o.smoothing_window, reading_spacing, s.h, monotone_window);
   const bool use_monotone = o.energy_crack == "monotone";
+  if (use_monotone)
+    out.window = monotone_window;
   const EnergySlopes& used = use_monotone ? monotone : as_read;
 
   out.max_opening_over_a = 0;
@@ -200,10 +236,13 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
   out.notes.push_back(
       "direct energy: R = dD/(B da), D = W - P opening/2, slope of a local least-squares line of "
       "D against a over a " +
-      num(out.window / units::mm) + " mm window" +
-      (std::isnan(o.smoothing_window) ? " (automatic: the larger of 10 median reading spacings "
-                                        "and 4 arm thicknesses)"
-                                      : "") +
+      (std::isnan(o.smoothing_window)
+           ? "window chosen at each reading from the data (intersection of confidence intervals "
+             "over windows from 5 median reading spacings up to the larger of 10 spacings and 4 "
+             "arm thicknesses, " +
+                 num(auto_window(reading_spacing, s.h) / units::mm) + " mm; median " +
+                 num(out.window / units::mm) + " mm)"
+           : num(out.window / units::mm) + " mm window") +
       "; a " +
       (use_monotone ? "from isotonic regression of the readings against time, smoothed by local "
                       "lines over " +
@@ -386,10 +425,10 @@ ReducedRecord reduce_record(const TestRecord& rec, const specimen::Specimen& sp,
                        std::to_string(out.rows.size()) + " steps of " + num(step / units::mm) +
                        " mm beyond a0 = " + num(out.a0 / units::mm) + " mm; at least " +
                        std::to_string(min_readings) + " are needed");
-    out.window = std::isnan(o.smoothing_window) ? auto_window(step, s.h) : o.smoothing_window;
-    if (!(out.window > 0))
+    if (!(o.smoothing_window > 0) && !std::isnan(o.smoothing_window))
       throw InputError(src + ": the smoothing window must be > 0 mm, got " +
-                       num(out.window / units::mm));
+                       num(o.smoothing_window / units::mm));
+    out.window = std::isnan(o.smoothing_window) ? auto_window(step, s.h) : o.smoothing_window;
     out.max_opening_over_a = 0;
     for (std::size_t j = 0; j < out.rows.size(); ++j)
       out.max_opening_over_a = std::max(out.max_opening_over_a, out.opening[j] / out.a[j]);
@@ -420,7 +459,14 @@ ReducedRecord reduce_record(const TestRecord& rec, const specimen::Specimen& sp,
                            s.N(d, running));
       Dr.push_back(D[i]);
     }
-    const EnergySlopes eq = energy_slopes(out.a_eq, Dr, out.window);
+    // Against the equivalent crack the automatic window is chosen from the data as with
+    // readings, at the steps' spacing.
+    double eq_window = out.window;
+    const EnergySlopes eq = measured ? energy_slopes(out.a_eq, Dr, out.window)
+                                     : slopes_of(out.a_eq, Dr, o.smoothing_window,
+                                                 median_step(out.a_eq), s.h, eq_window);
+    if (!measured)
+      out.window = eq_window;
     for (std::size_t j = 0; j < out.rows.size(); ++j) {
       out.R_energy_eq.push_back(eq.slope[j] / s.B);
       out.R_energy_eq_lo.push_back(eq.lo[j] / s.B);
@@ -432,7 +478,12 @@ ReducedRecord reduce_record(const TestRecord& rec, const specimen::Specimen& sp,
       out.R_energy_hi = out.R_energy_eq_hi;
       out.notes.push_back("direct energy: R = dD/(B da_eq), D = W - P opening/2 against the "
                           "equivalent crack, local lines over a " +
-                          num(out.window / units::mm) + " mm window; band as with readings");
+                          num(out.window / units::mm) + " mm window" +
+                          (std::isnan(o.smoothing_window)
+                               ? " (median of the windows chosen from the data at each step, as "
+                                 "with readings)"
+                               : "") +
+                          "; band as with readings");
     }
   }
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 namespace fiberbridge::analysis {
 
@@ -143,27 +144,74 @@ SteadyState find_steady_state(const RDeltaCurve& curve, const SteadyStateOptions
         << " points), hinge at delta = " << mm(flat.hinge) << ". ";
   }
 
-  // G_ss: the mean of the tail, which must be flat.
+  // G_ss: the mean of the last stretch of R that is flat. The tail (the last tail_fraction of
+  // the range) must not rise; when it falls (the zone meeting the specimen's far end lengthens,
+  // so the tip reading runs ahead of the work done: a measurement's end effect, R(delta) of
+  // Eq. 2 never falls) the stretch of the same width is moved back until it is flat, and G_ss
+  // is its mean.
   std::size_t t0 = N;
   while (t0 > 0 && d[t0 - 1] >= d.back() - options.tail_fraction * range)
     --t0;
   t0 = std::min(t0, N - min_points);
-  const double G_tail = mean(R, t0, N);
-  const LineFit tail = fit_line(d, R, t0, N);
-  const double rise = tail.slope * (d.back() - d[t0]);
+  std::size_t t1 = N; // the stretch is [t0, t1)
+  const double width = options.tail_fraction * range;
+  /// Change of the fitted line over the stretch and twice its standard error (noise of R).
+  auto stretch_rise = [&](std::size_t b, std::size_t e) {
+    const LineFit f = fit_line(d, R, b, e);
+    double ss = 0, sxx = 0;
+    for (std::size_t i = b; i < e; ++i) {
+      ss += std::pow(R[i] - f.at(d[i]), 2);
+      sxx += std::pow(d[i] - f.x_mean, 2);
+    }
+    const double w = d[e - 1] - d[b];
+    const double se = e - b > 2 && sxx > 0 ? std::sqrt(ss / double(e - b - 2) / sxx) : 0.0;
+    return std::pair<double, double>(f.slope * w, 2 * se * w);
+  };
+  auto [rise, rise_noise] = stretch_rise(t0, t1);
+  const double G_last = mean(R, t0, t1);
+  const double G_top = std::max(G_last, ss.j_tip);
+  // The band: plateau_band of G_B, or the noise of the fitted change if larger (a noisy record
+  // that is flat must not be refused for its scatter).
+  auto band_of = [&](double G, double noise) {
+    return std::max(options.plateau_band * (G - ss.j_tip), noise);
+  };
+  double band = band_of(G_top, rise_noise);
+  const double last_rise = rise, last_band = band;
+  bool falling = false;
+  if (rise < -band) {
+    // Move the stretch back one point at a time while it falls; stop at the first flat one.
+    // It must not reach into the first half of the range (that is no steady state any more).
+    falling = true;
+    while (t0 > 0 && d[t0 - 1] >= d.front() + 0.5 * range) {
+      --t0;
+      while (t1 - 1 > t0 && d[t1 - 1] > d[t0] + width)
+        --t1;
+      if (t1 - t0 < min_points)
+        break;
+      std::tie(rise, rise_noise) = stretch_rise(t0, t1);
+      band = band_of(std::max(mean(R, t0, t1), ss.j_tip), rise_noise);
+      if (rise >= -band)
+        break;
+    }
+  }
+  const double G_tail = mean(R, t0, t1);
   if (!(ss.j_tip < G_tail))
     throw InputError(
         source + ": J_tip = " + jm2(ss.j_tip) + (ss.j_tip_automatic ? "" : " (given)") +
         " is not below the plateau R = " + jm2(G_tail) + " over delta >= " + mm(d[t0]) +
         "; there is no bridging toughness G_B = G_ss - J_tip > 0");
-  const double band = options.plateau_band * (G_tail - ss.j_tip);
-  const bool flat = std::abs(rise) < band;
+  const bool flat = std::abs(rise) <= band;
   std::ostringstream tail_text;
-  tail_text << "tail delta in [" << mm(d[t0]) << ", " << mm(d.back()) << "] (" << N - t0
-            << " points, last " << options.tail_fraction * 100
-            << " % of the range): mean R = " << jm2(G_tail)
+  if (falling)
+    tail_text << "R falls over the last " << options.tail_fraction * 100
+              << " % of the range (fitted change " << jm2(last_rise) << " beyond the band "
+              << jm2(last_band) << "), taken as the specimen's end effect; ";
+  tail_text << (falling ? "the last flat stretch" : "tail") << " delta in [" << mm(d[t0]) << ", "
+            << mm(d[t1 - 1]) << "] (" << t1 - t0 << " points, "
+            << options.tail_fraction * 100 << " % of the range): mean R = " << jm2(G_tail)
             << ", fitted slope x width = " << jm2(rise) << " against the plateau band "
-            << options.plateau_band * 100 << " % of G_B = " << jm2(band);
+            << jm2(band) << " (the larger of " << options.plateau_band * 100
+            << " % of G_B and twice the fitted change's standard error)";
 
   if (options.delta_c > 0) {
     if (!(options.delta_c >= d.front() && options.delta_c <= d.back()))
@@ -194,9 +242,11 @@ SteadyState find_steady_state(const RDeltaCurve& curve, const SteadyStateOptions
   }
 
   if (!flat)
-    throw ComputationError("no steady state in " + source + ": R is still changing at the end " +
-                           "of the data (" + tail_text.str() +
-                           "); give delta_c explicitly or measure further");
+    throw ComputationError(
+        "no steady state in " + source + ": " +
+        (rise > 0 ? std::string("R is still rising at the end of the data (")
+                  : std::string("R falls over the whole second half of the data (")) +
+        tail_text.str() + "); give delta_c explicitly or measure further");
   ss.G_ss = G_tail;
   why << "G_ss = " << jm2(ss.G_ss) << ": " << tail_text.str() << ", flat. ";
 

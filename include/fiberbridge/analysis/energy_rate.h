@@ -18,9 +18,20 @@ std::vector<double> dissipated_energy(const TestRecord& record);
 /// x sqrt(4/3), over the points within two windows either side; record_reduction.h says why).
 struct EnergySlopes {
   std::vector<double> slope, lo, hi; ///< dD/da and its band [J/m]
+  std::vector<double> window;        ///< the window of each point [m]
 };
 EnergySlopes energy_slopes(const std::vector<double>& a, const std::vector<double>& D,
                            double window);
+
+/// The same slopes and band with a window chosen at each point from the data: intersection of
+/// confidence intervals (Lepski/ICI) over windows from `w_min` growing by sqrt(2) up to `w_max`.
+/// The interval of each slope is +-2 sigma/sqrt(Sxx), sigma the median residual standard
+/// deviation of the `w_min` lines; the widest window whose interval still meets those of all
+/// narrower ones is kept. Where R bends (the rise after initiation, the onset of the plateau)
+/// the wider slopes leave the narrow ones' intervals and the window stays short; where R is
+/// straight or the record is noisy it grows to `w_max`.
+EnergySlopes energy_slopes_adaptive(const std::vector<double>& a, const std::vector<double>& D,
+                                    double w_min, double w_max);
 
 /// A monotone smooth crack length at every row from the fresh readings (rows `readings` of
 /// `record`): isotonic regression of the readings against time (pool-adjacent-violators: a crack
