@@ -73,6 +73,12 @@ private:
   std::vector<double> sx_, sy_, sxx_, sxy_, syy_;
 };
 
+/// Median of a copy of v (the upper one of an even count); v non-empty.
+double median_of(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
 } // namespace
 
 std::vector<double> dissipated_energy(const TestRecord& rec) {
@@ -139,6 +145,41 @@ EnergySlopes slopes_with_windows(const WindowLines& lines, const std::vector<dou
   return out;
 }
 
+/// How much larger the slopes' scatter over w_min is than the residuals of the w_min lines say
+/// (1 at least). Reading errors correlated over more than w_min (a crack read in steps that
+/// lags and catches up, a tip tracked in jumps of the point spacing) bend D(a) smoothly inside
+/// the narrow windows: their residuals stay small while their slopes wander, and only the
+/// scatter of the slopes themselves shows it. Measured as the difference d of the slopes over
+/// w_min and over 2 w_min, which for independent noise holds 7/8 of the w_min slope's variance
+/// (nested least squares: the wider slope's variance, 1/8 of it, is also their covariance).
+/// Bias is taken out by differencing d at points 2 w_min apart, where the noise of the two is
+/// independent and a smooth bias (R curving) nearly cancels; medians (/0.455, the median of
+/// chi^2 with one degree of freedom) keep a few wild stretches from setting the record's noise.
+/// `nominal_se`: the median standard error of the w_min slopes from the residuals.
+double correlated_noise_factor(const WindowLines& lines, const std::vector<double>& a, double w_min,
+                               double nominal_se) {
+  const std::size_t n = a.size();
+  auto slope_over = [&](std::size_t j, double w) {
+    const auto b = std::lower_bound(a.begin(), a.end(), a[j] - w / 2) - a.begin();
+    const auto e = std::upper_bound(a.begin(), a.end(), a[j] + w / 2) - a.begin();
+    return lines.slope(static_cast<std::size_t>(b), static_cast<std::size_t>(e)).first;
+  };
+  std::vector<double> d(n);
+  for (std::size_t j = 0; j < n; ++j)
+    d[j] = slope_over(j, w_min) - slope_over(j, 2 * w_min);
+  std::vector<double> half_d2;
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto jj = static_cast<std::size_t>(
+        std::lower_bound(a.begin(), a.end(), a[j] + 2 * w_min) - a.begin());
+    if (jj < n && std::isfinite(d[j]) && std::isfinite(d[jj]))
+      half_d2.push_back(std::pow(d[j] - d[jj], 2) / 2);
+  }
+  if (half_d2.empty() || !(nominal_se > 0))
+    return 1;
+  const double scatter = std::sqrt(median_of(half_d2) / 0.455 * 8.0 / 7.0);
+  return std::max(1.0, scatter / nominal_se);
+}
+
 } // namespace
 
 EnergySlopes energy_slopes(const std::vector<double>& a, const std::vector<double>& D,
@@ -159,18 +200,20 @@ EnergySlopes energy_slopes_adaptive(const std::vector<double>& a, const std::vec
   // deviation of the narrowest lines. On a clean record it is the curvature left in w_min (and
   // the windows stay narrow); on a noisy one it is the noise, and the windows grow where R is
   // straight enough for the wider slope to agree with the narrower ones.
-  std::vector<double> sd;
+  std::vector<double> sd, nominal_se;
   for (std::size_t j = 0; j < n; ++j) {
     const auto [b, e] = bounds(a[j], w_min);
     const double s = lines.residual_sd(b, e);
-    if (std::isfinite(s))
+    if (std::isfinite(s)) {
       sd.push_back(s);
+      nominal_se.push_back(s / std::sqrt(lines.spread(b, e)));
+    }
   }
   std::vector<double> window(n, w_max);
   if (sd.empty())
     return slopes_with_windows(lines, a, window);
-  std::nth_element(sd.begin(), sd.begin() + sd.size() / 2, sd.end());
-  const double sigma = sd[sd.size() / 2];
+  double sigma = median_of(sd);
+  sigma *= correlated_noise_factor(lines, a, w_min, median_of(nominal_se));
   for (std::size_t j = 0; j < n; ++j) {
     // Intersection of confidence intervals over windows growing by sqrt(2): the widest window
     // whose slope +- ici_width standard errors (from sigma) still overlaps every narrower one.
@@ -190,7 +233,18 @@ EnergySlopes energy_slopes_adaptive(const std::vector<double>& a, const std::vec
     }
     window[j] = std::isfinite(chosen) ? chosen : w_max;
   }
-  return slopes_with_windows(lines, a, window);
+  // The chosen window, smoothed: the median of the choices within w_max / 2 either side. The
+  // intersection stops at the first narrow slope that a reading error throws out of the
+  // intervals, so a lone choice is noisy exactly where the errors are heavy-tailed (a reading
+  // that catches up after a stall); where the record needs narrow windows (a knee of R) its
+  // neighbours choose them too.
+  std::vector<double> smoothed(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto [b, e] = bounds(a[j], w_max);
+    smoothed[j] = median_of(std::vector<double>(window.begin() + static_cast<std::ptrdiff_t>(b),
+                                                window.begin() + static_cast<std::ptrdiff_t>(e)));
+  }
+  return slopes_with_windows(lines, a, smoothed);
 }
 
 std::vector<double> isotonic(const std::vector<double>& y) {

@@ -26,10 +26,12 @@ EnergySlopes energy_slopes(const std::vector<double>& a, const std::vector<doubl
 /// The same slopes and band with a window chosen at each point from the data: intersection of
 /// confidence intervals (Lepski/ICI) over windows from `w_min` growing by sqrt(2) up to `w_max`.
 /// The interval of each slope is +-2 sigma/sqrt(Sxx), sigma the median residual standard
-/// deviation of the `w_min` lines; the widest window whose interval still meets those of all
-/// narrower ones is kept. Where R bends (the rise after initiation, the onset of the plateau)
-/// the wider slopes leave the narrow ones' intervals and the window stays short; where R is
-/// straight or the record is noisy it grows to `w_max`.
+/// deviation of the `w_min` lines, scaled up where the slopes over `w_min` scatter more than
+/// those residuals say (reading errors correlated over more than `w_min`, as in cracks read in
+/// steps); the widest window whose interval still meets those of all narrower ones is kept,
+/// and the choices are smoothed by a running median over `w_max`. Where R bends (the rise after
+/// initiation, the onset of the plateau) the wider slopes leave the narrow ones' intervals and
+/// the window stays short; where R is straight or the record is noisy it grows to `w_max`.
 EnergySlopes energy_slopes_adaptive(const std::vector<double>& a, const std::vector<double>& D,
                                     double w_min, double w_max);
 
