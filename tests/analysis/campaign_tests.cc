@@ -242,14 +242,19 @@ TEST(CampaignTable1, SeedValuesReproduceThePapersSlopesAndRanking) {
   EXPECT_EQ(ranking.reference, std::vector<std::string>{"DF"});
 }
 
-// Bad manifests: every error names manifest:line.
-TEST(CampaignManifest, BadManifestsNameTheLine) {
-  const fs::path d = scratch("bad");
+namespace {
+
+/// Two synthetic PVA c0 records in `d` (PVA_c0_s1.csv, PVA_c0_s2.csv) for manifests to list.
+void write_two_pva_records(const fs::path& d) {
   const auto truth = table1_truth(read_property_table(table1));
   SyntheticCampaignOptions so;
   so.replicates = 2;
-  write_synthetic_campaign(d.string(), {truth[0]}, so); // PVA_c0_s1.csv, PVA_c0_s2.csv
-  auto expect_error = [&](const std::string& text, const std::string& what) {
+  write_synthetic_campaign(d.string(), {truth[0]}, so);
+}
+
+/// A check that the manifest `text`, written to d/m.csv, is refused with a message holding `what`.
+auto manifest_error_check(const fs::path& d) {
+  return [d](const std::string& text, const std::string& what) {
     write(d / "m.csv", text);
     try {
       read_campaign_manifest((d / "m.csv").string());
@@ -258,6 +263,15 @@ TEST(CampaignManifest, BadManifestsNameTheLine) {
       EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
     }
   };
+}
+
+} // namespace
+
+// Bad manifests: every error names manifest:line.
+TEST(CampaignManifest, BadManifestsNameTheLine) {
+  const fs::path d = scratch("bad");
+  write_two_pva_records(d);
+  const auto expect_error = manifest_error_check(d);
   const std::string head = "file,material,cycles,specimen\n";
   expect_error(head + "PVA_c0_s1.csv,PVA,0,a\nmissing.csv,PVA,0,b\n", "m.csv:3");
   expect_error(head + "PVA_c0_s1.csv,PVA,0,a\nPVA_c0_s2.csv,PVA,0,a\n", "listed twice");
@@ -481,19 +495,8 @@ TEST(CampaignSpecimen, RawRecordWithDeltaRootGivesRDelta) {
 // fit cannot take are refused with the manifest's line before anything runs.
 TEST(CampaignManifest, CollidingMaterialNamesLongNamesAndHugeCyclesAreRefused) {
   const fs::path d = scratch("collide");
-  const auto truth = table1_truth(read_property_table(table1));
-  SyntheticCampaignOptions so;
-  so.replicates = 2;
-  write_synthetic_campaign(d.string(), {truth[0]}, so);
-  auto expect_error = [&](const std::string& text, const std::string& what) {
-    write(d / "m.csv", text);
-    try {
-      read_campaign_manifest((d / "m.csv").string());
-      ADD_FAILURE() << "no error for: " << text;
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
-    }
-  };
+  write_two_pva_records(d);
+  const auto expect_error = manifest_error_check(d);
   const std::string head = "file,material,cycles,specimen\n";
   expect_error(head + "PVA_c0_s1.csv,PF 1,0,a\nPVA_c0_s2.csv,PF_1,0,b\n",
                "m.csv:3: material 'PF_1' and 'PF 1'");

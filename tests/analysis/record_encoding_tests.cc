@@ -6,9 +6,9 @@
 #include "fiberbridge/core/exported_table.h"
 #include "fiberbridge/core/text_encoding.h"
 
-#include <gtest/gtest.h>
+#include "encoded_text.h"
 
-#include <iconv.h>
+#include <gtest/gtest.h>
 
 #include <cstdio>
 #include <fstream>
@@ -24,21 +24,7 @@ namespace {
 const std::string shared = std::string(FIBERBRIDGE_DATA_DIR) + "/dcb_records/DCB-01_Toughness.csv";
 const std::string shared_map = "time_s: Time, opening_mm: Disp, load_N: Force, a_mm: CrackExt";
 
-std::string encoded(const std::string& utf8, const char* encoding) {
-  iconv_t cd = iconv_open(encoding, "UTF-8");
-  if (cd == reinterpret_cast<iconv_t>(-1))
-    throw std::runtime_error(std::string("iconv has no ") + encoding);
-  std::string out(4 * utf8.size() + 16, '\0');
-  char* in = const_cast<char*>(utf8.data());
-  std::size_t in_left = utf8.size(), out_left = out.size();
-  char* o = out.data();
-  const std::size_t r = iconv(cd, &in, &in_left, &o, &out_left);
-  iconv_close(cd);
-  if (r == static_cast<std::size_t>(-1))
-    throw std::runtime_error(std::string("not representable in ") + encoding);
-  out.resize(out.size() - out_left);
-  return out;
-}
+using test_support::encoded;
 
 std::string file_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -10,9 +10,9 @@
 #include "fiberbridge/core/unit_parse.h"
 #include "fiberbridge/core/units.h"
 
-#include <gtest/gtest.h>
+#include "encoded_text.h"
 
-#include <iconv.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
@@ -134,23 +134,7 @@ std::string spreadsheet(const Raw& r) {
   return s;
 }
 
-/// `utf8` in code page `encoding`, as a program on a Windows with that code page writes it
-/// (glibc's iconv; every character of our texts exists in the code pages used).
-std::string encoded(const std::string& utf8, const char* encoding) {
-  iconv_t cd = iconv_open(encoding, "UTF-8");
-  if (cd == reinterpret_cast<iconv_t>(-1))
-    throw std::runtime_error(std::string("iconv has no ") + encoding);
-  std::string out(4 * utf8.size() + 16, '\0');
-  char* in = const_cast<char*>(utf8.data());
-  std::size_t in_left = utf8.size(), out_left = out.size();
-  char* o = out.data();
-  const std::size_t r = iconv(cd, &in, &in_left, &o, &out_left);
-  iconv_close(cd);
-  if (r == static_cast<std::size_t>(-1))
-    throw std::runtime_error(std::string("not representable in ") + encoding);
-  out.resize(out.size() - out_left);
-  return out;
-}
+using test_support::encoded;
 
 /// Bluehill on a Polish Windows: the Bluehill layout with Polish headers, in windows-1250
 /// ("Obciążenie": ą and ż are 0xB9 and 0xBF, which windows-1252 reads as '¹' and '¿').
