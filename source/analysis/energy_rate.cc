@@ -17,6 +17,18 @@ constexpr double scatter_windows = 4;
 /// window only while the wider slope agrees with every narrower one at about 95 %.
 constexpr double ici_width = 2;
 
+/// The readings [begin, end) within w/2 of x. The half-width is widened by 1e-6 of itself (a
+/// nanometre on millimetre windows): readings on a regular grid fall exactly on the edges of
+/// windows that are whole multiples of their spacing, and an edge reading must stay in whatever
+/// the last written digit of the file (9 significant digits of a crack length in metres move it
+/// by ~1e-10 m; the same record through another export must give the same R).
+std::pair<std::size_t, std::size_t> window_bounds(const std::vector<double>& a, double x,
+                                                  double w) {
+  const double half = 0.5 * w * (1 + 1e-6);
+  return {static_cast<std::size_t>(std::lower_bound(a.begin(), a.end(), x - half) - a.begin()),
+          static_cast<std::size_t>(std::upper_bound(a.begin(), a.end(), x + half) - a.begin())};
+}
+
 /// Local straight lines of y against x over windows [begin, end) in O(1) each: prefix sums of
 /// the samples taken about their overall means, so that window sums far from the origin keep
 /// their digits (the dissipated energy grows to a few joules while its noise is ~1e-4 J).
@@ -96,18 +108,13 @@ namespace {
 
 /// The band and slopes for a window per point (energy_slopes and energy_slopes_adaptive).
 EnergySlopes slopes_with_windows(const WindowLines& lines, const std::vector<double>& a,
-                                 const std::vector<double>& window) {
+                                 const std::vector<double>& window, double se_factor = 1) {
   // Two estimates at every point: the slope over the window w and over 2 w. Where R is locally
   // linear over 2 w both are unbiased, and their difference measures the scatter of the w
   // estimate that the 2 w one averages out: reading noise (then close to the standard error) and
   // tracking errors correlated over a few mm, which the residual-based standard error of one
   // window cannot see because they bend D(a) smoothly inside it.
-  auto window_of = [&](double x, double w) {
-    const auto lo = std::lower_bound(a.begin(), a.end(), x - w / 2) - a.begin();
-    const auto hi = std::upper_bound(a.begin(), a.end(), x + w / 2) - a.begin();
-    return std::pair<std::size_t, std::size_t>(static_cast<std::size_t>(lo),
-                                               static_cast<std::size_t>(hi));
-  };
+  auto window_of = [&](double x, double w) { return window_bounds(a, x, w); };
   const std::size_t n = a.size();
   std::vector<double> slope(n, NAN), slope_se(n, NAN);
   std::vector<double> diff2_sum(n + 1, 0.0), diff_count(n + 1, 0.0);
@@ -126,7 +133,8 @@ EnergySlopes slopes_with_windows(const WindowLines& lines, const std::vector<dou
   out.lo.resize(n);
   out.hi.resize(n);
   for (std::size_t j = 0; j < n; ++j) {
-    // s: the larger of the slope's standard error and the RMS difference between the w and 2 w
+    // s: the larger of the slope's standard error (times se_factor, the correlated-noise factor of
+    // the data-chosen windows; 1 for a fixed window) and the RMS difference between the w and 2 w
     // estimates within two windows either side, x sqrt(4/3). Why that factor: for reading errors
     // correlated over less than a window the 2 w slope carries a quarter of the w slope's error
     // variance (an end-to-end difference over twice the length), so the difference of the two
@@ -138,7 +146,7 @@ EnergySlopes slopes_with_windows(const WindowLines& lines, const std::vector<dou
     const double n_diff = diff_count[ne] - diff_count[nb];
     const double scatter =
         n_diff > 0 ? std::sqrt((diff2_sum[ne] - diff2_sum[nb]) / n_diff * 4.0 / 3.0) : slope_se[j];
-    const double half = 2 * std::max(slope_se[j], scatter);
+    const double half = 2 * std::max(se_factor * slope_se[j], scatter);
     out.lo[j] = slope[j] - half;
     out.hi[j] = slope[j] + half;
   }
@@ -160,9 +168,8 @@ double correlated_noise_factor(const WindowLines& lines, const std::vector<doubl
                                double nominal_se) {
   const std::size_t n = a.size();
   auto slope_over = [&](std::size_t j, double w) {
-    const auto b = std::lower_bound(a.begin(), a.end(), a[j] - w / 2) - a.begin();
-    const auto e = std::upper_bound(a.begin(), a.end(), a[j] + w / 2) - a.begin();
-    return lines.slope(static_cast<std::size_t>(b), static_cast<std::size_t>(e)).first;
+    const auto [b, e] = window_bounds(a, a[j], w);
+    return lines.slope(b, e).first;
   };
   std::vector<double> d(n);
   for (std::size_t j = 0; j < n; ++j)
@@ -170,7 +177,7 @@ double correlated_noise_factor(const WindowLines& lines, const std::vector<doubl
   std::vector<double> half_d2;
   for (std::size_t j = 0; j < n; ++j) {
     const auto jj = static_cast<std::size_t>(
-        std::lower_bound(a.begin(), a.end(), a[j] + 2 * w_min) - a.begin());
+        std::lower_bound(a.begin(), a.end(), a[j] + 2 * w_min * (1 - 1e-6)) - a.begin());
     if (jj < n && std::isfinite(d[j]) && std::isfinite(d[jj]))
       half_d2.push_back(std::pow(d[j] - d[jj], 2) / 2);
   }
@@ -191,11 +198,7 @@ EnergySlopes energy_slopes_adaptive(const std::vector<double>& a, const std::vec
                                     double w_min, double w_max) {
   const WindowLines lines(a, D);
   const std::size_t n = a.size();
-  auto bounds = [&](double x, double w) {
-    return std::pair<std::size_t, std::size_t>(
-        static_cast<std::size_t>(std::lower_bound(a.begin(), a.end(), x - w / 2) - a.begin()),
-        static_cast<std::size_t>(std::upper_bound(a.begin(), a.end(), x + w / 2) - a.begin()));
-  };
+  auto bounds = [&](double x, double w) { return window_bounds(a, x, w); };
   // The noise of D about a smooth curve: the median over the points of the residual standard
   // deviation of the narrowest lines. On a clean record it is the curvature left in w_min (and
   // the windows stay narrow); on a noisy one it is the noise, and the windows grow where R is
@@ -212,8 +215,11 @@ EnergySlopes energy_slopes_adaptive(const std::vector<double>& a, const std::vec
   std::vector<double> window(n, w_max);
   if (sd.empty())
     return slopes_with_windows(lines, a, window);
-  double sigma = median_of(sd);
-  sigma *= correlated_noise_factor(lines, a, w_min, median_of(nominal_se));
+  // The same factor widens the band's standard-error term (slopes_with_windows): the windows
+  // are now of the order of the errors' correlation length, where the w against 2 w scatter
+  // sees only part of them.
+  const double noise_factor = correlated_noise_factor(lines, a, w_min, median_of(nominal_se));
+  const double sigma = median_of(sd) * noise_factor;
   for (std::size_t j = 0; j < n; ++j) {
     // Intersection of confidence intervals over windows growing by sqrt(2): the widest window
     // whose slope +- ici_width standard errors (from sigma) still overlaps every narrower one.
@@ -244,7 +250,7 @@ EnergySlopes energy_slopes_adaptive(const std::vector<double>& a, const std::vec
     smoothed[j] = median_of(std::vector<double>(window.begin() + static_cast<std::ptrdiff_t>(b),
                                                 window.begin() + static_cast<std::ptrdiff_t>(e)));
   }
-  return slopes_with_windows(lines, a, smoothed);
+  return slopes_with_windows(lines, a, smoothed, noise_factor);
 }
 
 std::vector<double> isotonic(const std::vector<double>& y) {

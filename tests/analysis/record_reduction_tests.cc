@@ -195,8 +195,9 @@ TEST(RecordReduction, ElasticaDcbIsReducedExactlyWithFOverN) {
 // The direct energy needs no beam theory; where the arms are still nearly linear (opening below
 // a fifth of the crack length) and the window is two-sided, it should agree with MBT. Measured
 // medians of R_energy/R_MBT there with the automatic 10.8 mm window: DCB-01 0.937, DCB-02 0.936,
-// DCB-05 0.933 (MBT with F and N); the energy slope's own band is +-5-10 % (2 s.e.) at these
-// readings, so the 10 % tolerance is that band, not more. DCB-03 does not agree: 0.79. Over da =
+// DCB-05 0.933 (MBT with F and N); with the windows chosen from the data (median 5.7-8.3 mm
+// here): 1.029, 0.934, 0.928. The energy slope's own band is +-5-10 % (2 s.e.) at these
+// readings, so the 10 % tolerance is that band, not more. DCB-03 does not agree: 0.79 (0.81). Over da =
 // 5-12 mm its energy R stays at 490-530 J/m^2 while MBT rises from 560 to 710, then the energy R
 // catches up: the crack readings run ahead of the energy dissipated there (a tracked tip ahead of
 // the compliance crack), which the energy method divides by and MBT, which takes its crack from the
@@ -206,7 +207,11 @@ TEST(RecordReduction, EnergyAgreesWithMbtWhereArmsAreLinear) {
   for (const char* name : shared_records) {
     const auto rec = read_test_records(record_path(name), shared_columns()).at(0);
     const auto r = reduce_record(rec, shared_specimen());
-    EXPECT_NEAR(r.window, 4 * 2.7 * mm, 1e-12) << "automatic window: 4 arm thicknesses here";
+    // The automatic windows are chosen from the data between 5 reading spacings and the larger
+    // of 10 spacings and 4 arm thicknesses (10.8 mm here); these records' correlated reading
+    // errors keep the median well above the narrowest (about 1.3 mm).
+    EXPECT_LE(r.window, 4 * 2.7 * mm * (1 + 1e-12)) << name << ": above the widest window";
+    EXPECT_GE(r.window, 4 * mm) << name << ": the windows follow the reading errors";
     std::vector<double> ratio;
     for (std::size_t i = 0; i < r.a.size(); ++i)
       if (r.opening[i] / r.a[i] < 0.2 && r.da[i] >= r.window / 2)

@@ -186,15 +186,19 @@ TEST(RecordFromBeam, EnergyBandCoversTheKnownCurve) {
         "tracking drift %.1f mm over %.0f mm: the band holds the model at %.1f %% of %zu readings "
         "(16 seeds), mean half-width %.1f %% of R\n",
         drift / mm, correlation / mm, 100 * rate, n, 100 * rel_half_width / n);
-    // Measured (docs/verification.md, "Test records"): 99.2 % without drift (the band is
-    // conservative there: the 2 w comparison also sees the R curve's curvature), 94.5 % with
-    // drift correlated over 5 mm (errors correlated over less than the 10.8 mm window: the
-    // nominal 95 %), 90.3 % over 12 mm (errors correlated beyond the window are partly common
-    // to the w and 2 w slopes, so the band sees less of them). The old +-2 s.e. band held the
-    // model at 88.6 % and 38.5 % in the first two cases. The 16 seeds give the rates a sampling
-    // scatter of about 1.5 % (some 10 independent windows per record); the bounds are the
-    // measured rates less 2.5 %, the nominal rate where it is reached.
-    const double bound = drift == 0 ? 0.95 : correlation < 10 * mm ? 0.92 : 0.875;
+    // Measured (docs/verification.md, "Test records"), with the fixed 10.8 mm window: 99.2 %
+    // without drift (the band is conservative there: the 2 w comparison also sees the R curve's
+    // curvature), 94.5 % with drift correlated over 5 mm (errors correlated over less than the
+    // window: the nominal 95 %), 90.3 % over 12 mm (errors correlated beyond the window are
+    // partly common to the w and 2 w slopes, so the band sees less of them). The old +-2 s.e.
+    // band held the model at 88.6 % and 38.5 % in the first two cases. With the windows chosen
+    // from the data (median about 8 mm here, issue 39 item 2): 98.7 %, 91.9 % and 88.9 %: the
+    // narrower windows come closer to the drift's correlation length, and the band loses 1.5-2.6
+    // points of coverage there (docs/verification.md, "The chain on virtual tests: after"). The
+    // 16 seeds give the rates a sampling scatter of about 1.5 % (some 10 independent windows per
+    // record); the bounds are the measured rates less 2.5 %, the nominal rate where it is
+    // reached.
+    const double bound = drift == 0 ? 0.95 : correlation < 10 * mm ? 0.89 : 0.86;
     EXPECT_GT(rate, bound) << "drift " << drift / mm << " mm over " << correlation / mm << " mm";
   }
 }
