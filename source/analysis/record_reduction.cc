@@ -115,8 +115,8 @@ EnergySlopes slopes_of(const std::vector<double>& a, const std::vector<double>& 
     return energy_slopes(a, D, window);
   }
   const double w_max = auto_window(spacing, h);
-  EnergySlopes e = energy_slopes_adaptive(
-      a, D, std::min(w_max, readings_per_narrowest_window * spacing), w_max);
+  EnergySlopes e =
+      energy_slopes_adaptive(a, D, std::min(w_max, readings_per_narrowest_window * spacing), w_max);
   reported = median(e.window);
   return e;
 }

@@ -207,10 +207,10 @@ SteadyState find_steady_state(const RDeltaCurve& curve, const SteadyStateOptions
               << " % of the range (fitted change " << jm2(last_rise) << " beyond the band "
               << jm2(last_band) << "), taken as the specimen's end effect; ";
   tail_text << (falling ? "the last flat stretch" : "tail") << " delta in [" << mm(d[t0]) << ", "
-            << mm(d[t1 - 1]) << "] (" << t1 - t0 << " points, "
-            << options.tail_fraction * 100 << " % of the range): mean R = " << jm2(G_tail)
-            << ", fitted slope x width = " << jm2(rise) << " against the plateau band "
-            << jm2(band) << " (the larger of " << options.plateau_band * 100
+            << mm(d[t1 - 1]) << "] (" << t1 - t0 << " points, " << options.tail_fraction * 100
+            << " % of the range): mean R = " << jm2(G_tail)
+            << ", fitted slope x width = " << jm2(rise) << " against the plateau band " << jm2(band)
+            << " (the larger of " << options.plateau_band * 100
             << " % of G_B and twice the fitted change's standard error)";
 
   if (options.delta_c > 0) {
@@ -242,11 +242,11 @@ SteadyState find_steady_state(const RDeltaCurve& curve, const SteadyStateOptions
   }
 
   if (!flat)
-    throw ComputationError(
-        "no steady state in " + source + ": " +
-        (rise > 0 ? std::string("R is still rising at the end of the data (")
-                  : std::string("R falls over the whole second half of the data (")) +
-        tail_text.str() + "); give delta_c explicitly or measure further");
+    throw ComputationError("no steady state in " + source + ": " +
+                           (rise > 0
+                                ? std::string("R is still rising at the end of the data (")
+                                : std::string("R falls over the whole second half of the data (")) +
+                           tail_text.str() + "); give delta_c explicitly or measure further");
   ss.G_ss = G_tail;
   why << "G_ss = " << jm2(ss.G_ss) << ": " << tail_text.str() << ", flat. ";
 

@@ -197,9 +197,9 @@ TEST(RecordReduction, ElasticaDcbIsReducedExactlyWithFOverN) {
 // medians of R_energy/R_MBT there with the automatic 10.8 mm window: DCB-01 0.937, DCB-02 0.936,
 // DCB-05 0.933 (MBT with F and N); with the windows chosen from the data (median 5.7-8.3 mm
 // here): 1.029, 0.934, 0.928. The energy slope's own band is +-5-10 % (2 s.e.) at these
-// readings, so the 10 % tolerance is that band, not more. DCB-03 does not agree: 0.79 (0.81). Over da =
-// 5-12 mm its energy R stays at 490-530 J/m^2 while MBT rises from 560 to 710, then the energy R
-// catches up: the crack readings run ahead of the energy dissipated there (a tracked tip ahead of
+// readings, so the 10 % tolerance is that band, not more. DCB-03 does not agree: 0.79 (0.81). Over
+// da = 5-12 mm its energy R stays at 490-530 J/m^2 while MBT rises from 560 to 710, then the energy
+// R catches up: the crack readings run ahead of the energy dissipated there (a tracked tip ahead of
 // the compliance crack), which the energy method divides by and MBT, which takes its crack from the
 // compliance fit, does not. That is a finding about the record, kept visible here rather than
 // tolerated away (docs/verification.md, "Test records").
