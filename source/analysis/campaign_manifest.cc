@@ -5,6 +5,7 @@
 #include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -155,6 +156,77 @@ SpecimenInput classify_specimen_file(const std::string& path) {
                                                             : SpecimenInput::raw_record;
 }
 
+const char* to_string(RaMethod m) {
+  static const char* names[n_ra_methods] = {"energy", "MBT", "CC", "MCC", "CBBM"};
+  return names[static_cast<std::size_t>(m)];
+}
+
+RaMethod parse_ra_method(const std::string& word, const std::string& where) {
+  for (std::size_t k = 0; k < n_ra_methods; ++k)
+    if (word == to_string(static_cast<RaMethod>(k)))
+      return static_cast<RaMethod>(k);
+  throw InputError(where + ": expected energy, MBT, CC, MCC or CBBM, got '" + word + "'");
+}
+
+namespace {
+
+/// An R(a)-only specimen: every estimator's values, the chosen one's as its own, and a note when
+/// the estimators' plateaus disagree beyond the direct-energy band of the plateau mean (the one
+/// band the reduction has: the beam-theory estimators come with none).
+void take_ra_estimates(CampaignSpecimen& s, const ReducedRecord& rr, RaMethod estimator,
+                       double plateau_fraction) {
+  s.methods = {rr.energy, rr.mbt, rr.cc, rr.mcc, rr.cbbm};
+  const MethodSummary& chosen = s.methods[static_cast<std::size_t>(estimator)];
+  s.initiation = chosen.initiation;
+  s.plateau = chosen.plateau;
+  s.notes.push_back(std::string("no delta_root in the record: R(a) only (initiation and plateau "
+                                "by ") +
+                    to_string(estimator) + "), no law");
+  if (!std::isfinite(chosen.plateau))
+    s.notes.push_back(std::string("the record gives no ") + to_string(estimator) + " plateau (" +
+                      (rr.crack == "equivalent" ? "no measured crack readings"
+                                                : "its fits failed; see the reduction notes") +
+                      "): the specimen has no G_ss; name another Campaign/R(a) estimator");
+  if (!rr.da.empty() && rr.R_energy_lo.size() == rr.da.size()) {
+    const double from = (1 - plateau_fraction) * rr.da.back();
+    double sum = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < rr.da.size(); ++i)
+      if (rr.da[i] >= from && std::isfinite(rr.R_energy_hi[i]) &&
+          std::isfinite(rr.R_energy_lo[i])) {
+        sum += (rr.R_energy_hi[i] - rr.R_energy_lo[i]) / 2;
+        ++n;
+      }
+    // The band is pointwise; the plateau is a mean over its extent, whose slope errors are
+    // independent only a window apart: the mean's band is the pointwise one over sqrt(extent /
+    // window) (at least one window).
+    const double extent = plateau_fraction * rr.da.back();
+    const double independent =
+        std::isfinite(rr.window) && rr.window > 0 ? std::max(1.0, extent / rr.window) : 1.0;
+    if (n > 0)
+      s.plateau_band = sum / n / std::sqrt(independent);
+  }
+  if (!std::isfinite(chosen.plateau) || !std::isfinite(s.plateau_band))
+    return;
+  std::string values;
+  bool apart = false;
+  for (std::size_t k = 0; k < n_ra_methods; ++k) {
+    const double p = s.methods[k].plateau;
+    if (!std::isfinite(p))
+      continue;
+    values += std::string(values.empty() ? "" : ", ") + to_string(static_cast<RaMethod>(k)) + " " +
+              fmt(p);
+    apart = apart || std::abs(p - chosen.plateau) > s.plateau_band;
+  }
+  if (apart)
+    s.notes.push_back("the R(a) estimators' plateaus disagree beyond the direct-energy band of "
+                      "the plateau (+-" +
+                      fmt(s.plateau_band) + " J/m^2): " + values + " J/m^2; the group takes " +
+                      to_string(estimator));
+}
+
+} // namespace
+
 CampaignSpecimen load_campaign_specimen(const CampaignRow& row, const RawRecordOptions& raw) {
   CampaignSpecimen s;
   s.row = row;
@@ -182,26 +254,14 @@ CampaignSpecimen load_campaign_specimen(const CampaignRow& row, const RawRecordO
       if (records.size() != 1)
         throw InputError(row.file + " holds " + std::to_string(records.size()) +
                          " records; a manifest row is one specimen");
-      specimen::Specimen spec = raw.specimen;
-      if (std::isfinite(row.width))
-        spec.width = row.width;
-      if (std::isfinite(row.arm_thickness))
-        spec.height = 2 * row.arm_thickness; // both arms
-      if (std::isfinite(row.length))
-        spec.length = row.length;
-      // The row's a0 replaces the Specimen's where the reduction uses the Specimen's (Test/Use
-      // specimen initial crack); otherwise the record's first crack reading gives a0.
-      if (std::isfinite(row.initial_crack) && std::isfinite(spec.initial_crack))
-        spec.initial_crack = row.initial_crack;
-      const ReducedRecord rr = reduce_record(records.front(), spec, raw.reduce);
+      const RecordChainOptions own =
+          with_specimen_overrides(raw, row.width, row.arm_thickness, row.length, row.initial_crack);
+      const ReducedRecord rr = reduce_record(records.front(), own.specimen, own.reduce);
       if (!rr.delta_root.empty()) {
         s.curve = to_rdelta({rr}, row.file).replicates.front();
         s.has_rdelta = true;
       } else {
-        s.initiation = rr.energy.initiation;
-        s.plateau = rr.energy.plateau;
-        s.notes.push_back("no delta_root in the record: R(a) only (initiation and plateau by "
-                          "direct energy), no law");
+        take_ra_estimates(s, rr, raw.estimator, own.reduce.plateau_fraction);
       }
     }
   } catch (const InputError& e) {

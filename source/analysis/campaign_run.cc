@@ -18,6 +18,7 @@ CampaignResult analyse_campaign(const CampaignManifest& manifest, const RawRecor
   if (!(options.confidence > 0 && options.confidence < 1))
     throw InputError("Campaign/Confidence level: must lie in (0, 1)");
   CampaignResult r;
+  r.estimator = raw.estimator;
   r.manifest = manifest;
   r.options = options;
   r.reference_materials = reference_materials;

@@ -39,30 +39,23 @@ analysis::TestRecord read_campaign_dic_set(const analysis::CampaignRow& row,
               (fs::path(entry).is_absolute() ? entry : (fs::path(row.file) / entry).string());
   }
   DicStepOptions o;
+  o.where = set;
   o.dic = sets.dic.options();
   o.frames = dic::expand_frame_list(list, "", set + ": DIC/Frames");
   o.machine_record = (fs::path(row.file) / sets.test.files.front()).string();
   if (!fs::is_regular_file(o.machine_record))
     throw InputError(set + ": Test/Files: machine record '" + sets.test.files.front() +
                      "' not found in the set's folder");
-  o.machine_columns = sets.test.columns;
+  o.machine_read = sets.read;
   o.initial_crack = std::isfinite(row.initial_crack) ? row.initial_crack : sets.scene_initial_crack;
-  // The DIC step without its files (dic_step.cc: run_dic writes them for a scene's own dic).
-  const auto files = dic::order_frames(o.frames, set + ": DIC/Frames");
-  const dic::DicAnalysis analysis = dic::analyse_frames(files, o.dic);
-  const dic::MachineRecord machine =
-      dic::read_machine_record(o.machine_record, o.machine_columns, set + ": Test/Columns");
-  std::vector<std::string> notes;
-  const auto rows = dic::match_to_machine(analysis, machine, o.initial_crack, notes);
+  // The DIC step's own code (dic_step.h) without its files (run_dic writes them for a scene's dic).
+  const DicMatch match = match_dic_frames(o);
   record_text = dic::dic_record_text(
-      rows, {"Test record of " + row.material + " at " + fmt(row.cycles) + " cycles, specimen " +
-                 row.specimen + ", from the DIC set " + row.file_as_written +
-                 " (fiberbridge campaign): a = a0 " + fmt(o.initial_crack * 1e3) +
-                 " mm + the shift of the " + fmt(100 * o.dic.tip.threshold) +
-                 " % crack-normal strain point; delta_root by a virtual extensometer of " +
-                 fmt(o.dic.gauge_length * 1e3) + " mm",
-             "machine record: " + o.machine_record + "; " + std::to_string(rows.size()) +
-                 " frames inside its time span"});
+      match.rows,
+      dic_record_comments(o, match,
+                          "Test record of " + row.material + " at " + fmt(row.cycles) +
+                              " cycles, specimen " + row.specimen + ", from the DIC set " +
+                              row.file_as_written + " (fiberbridge campaign)"));
   // Read back as reduce reads dic_record.csv (our column names, the Test section's cleaning):
   // through a private file, removed at once.
   static std::atomic<unsigned> serial{0};

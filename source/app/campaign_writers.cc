@@ -243,12 +243,26 @@ void write_groups_table(const CampaignResult& r, const std::string& dir) {
   write_file_atomically(dir + "/campaign_groups.csv", text);
 }
 
+/// The estimator, every estimator's initiation and plateau and the direct-energy band of the
+/// plateau of an R(a)-only specimen (empty cells for an R(delta) specimen), each followed by a
+/// comma.
+std::string ra_methods_cells(const CampaignResult& r, const analysis::CampaignSpecimen& s) {
+  const bool ra_only = s.input != analysis::SpecimenInput::rdelta && !s.has_rdelta;
+  std::string text = std::string(ra_only ? analysis::to_string(r.estimator) : "") + ",";
+  for (const auto& m : s.methods)
+    text += (ra_only ? cell(m.initiation) : "") + "," + (ra_only ? cell(m.plateau) : "") + ",";
+  return text + (ra_only ? cell(s.plateau_band) : "") + ",";
+}
+
 void write_specimens_table(const CampaignResult& r, const std::string& dir) {
   std::string text = "# One row per manifest row: the specimen on its own (its notes say why it "
                      "is named; no specimen is dropped from its group).\n"
                      "manifest_line,file,material,cycles,specimen,input,rows,delta_max_mm,"
                      "J_tip_J_m2,G_ss_J_m2,delta_c_mm,steady_state,l_b_mm,initiation_J_m2,"
-                     "plateau_J_m2,notes\n";
+                     "plateau_J_m2,estimator,initiation_energy_J_m2,plateau_energy_J_m2,"
+                     "initiation_MBT_J_m2,plateau_MBT_J_m2,initiation_CC_J_m2,plateau_CC_J_m2,"
+                     "initiation_MCC_J_m2,plateau_MCC_J_m2,initiation_CBBM_J_m2,"
+                     "plateau_CBBM_J_m2,energy_plateau_band_J_m2,notes\n";
   std::map<std::size_t, std::vector<std::string>> group_notes;
   for (const auto& g : r.groups)
     for (auto m : g.members)
@@ -269,7 +283,7 @@ void write_specimens_table(const CampaignResult& r, const std::string& dir) {
             (s.steady ? cell(s.own.j_tip) : "") + "," + (s.steady ? cell(s.own.G_ss) : "") + "," +
             (s.steady ? cell(s.own.delta_c / mm) : "") + "," + (s.steady ? "1" : "0") + "," +
             cell(s.l_b / mm) + "," + cell(s.initiation) + "," + cell(s.plateau) + "," +
-            text_cell(notes) + "\n";
+            ra_methods_cells(r, s) + text_cell(notes) + "\n";
   }
   write_file_atomically(dir + "/campaign_specimens.csv", text);
 }
@@ -626,6 +640,10 @@ Json summary_block(const CampaignResult& r, const CampaignWriteOptions& w) {
          {"n_specimens", g.members.size()},
          {"specimens", specimens},
          {"ok", g.estimate.ok},
+         // R(a)-only groups: which estimator gave J_tip and G_ss (Campaign/R(a) estimator).
+         {"ra_estimator", !g.members.empty() && !r.specimens[g.members.front()].has_rdelta
+                              ? Json(analysis::to_string(r.estimator))
+                              : Json(nullptr)},
          {"trilinear", tri},
          {"J1_J_m2", json_number(q(g, GroupQuantity::J1))},
          {"J2_J_m2", json_number(q(g, GroupQuantity::J2))},

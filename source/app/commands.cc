@@ -315,15 +315,10 @@ int cmd_reduce(const std::vector<std::string>& args) {
     o.read.encoding = e;
   const double w = option_in(vm, "smoothing-window", 0, 1e4, "a window in mm (0 = automatic)");
   o.reduce.smoothing_window = w > 0 ? w * units::mm : NAN;
-  const std::string crack = vm["crack-length"].as<std::string>();
-  if (crack != "auto" && crack != "measured" && crack != "equivalent")
-    throw InputError("--crack-length: expected auto, measured or equivalent, got '" + crack + "'");
-  // `measured` makes a missing a_mm column an error; `equivalent` reduces against the
-  // compliance's equivalent crack, the readings (when the file has them) giving a0 and shown
-  // beside.
-  if (crack == "measured")
-    o.read.crack_length = analysis::CrackLengthSource::measured;
-  o.reduce.use_equivalent_crack = crack == "equivalent";
+  // One word for every door (analysis/record_chain.h): `measured` makes a missing a_mm column an
+  // error; `equivalent` reduces against the compliance's equivalent crack, the readings (when the
+  // file has them) giving a0 and shown beside.
+  analysis::set_crack_length(o, vm["crack-length"].as<std::string>(), "--crack-length");
   auto opt = [&](const char* key, double unit) {
     return vm.count(key) ? vm[key].as<double>() * unit : NAN;
   };
@@ -356,6 +351,8 @@ int cmd_dic(const std::vector<std::string>& args) {
       "record", po::value<std::string>()->required(), "the machine record (time, opening, load)")(
       "columns", po::value<std::string>()->default_value(""),
       "machine record columns: 'time_s: Time, opening_mm: Extension, load_N: Load'")(
+      "encoding", po::value<std::string>()->default_value("auto"),
+      "text encoding of the machine record: auto, or CP1250, CP932, GB18030, UTF-16LE, ...")(
       "frame-columns", po::value<std::string>()->default_value(""),
       "frame columns: 'eyy: ..., valid: ...' (x, y, u, v, eyy, valid, time_s)")(
       "format", po::value<std::string>()->default_value("auto"),
@@ -408,7 +405,11 @@ int cmd_dic(const std::vector<std::string>& args) {
   o.dic = s.options();
   o.frames = vm["frames"].as<std::vector<std::string>>();
   o.machine_record = vm["record"].as<std::string>();
-  o.machine_columns = vm["columns"].as<std::string>();
+  // Read as `reduce` reads a record (dic_step.h): the same column map, layouts and units.
+  o.machine_read.columns =
+      analysis::RecordColumnMap::parse(vm["columns"].as<std::string>(), "--columns");
+  if (const std::string e = vm["encoding"].as<std::string>(); e != "auto")
+    o.machine_read.encoding = e;
   o.initial_crack =
       option_in(vm, "initial-crack", 0.01, 1e5, "a crack length a0 in mm") * units::mm;
   const std::string out = vm["out"].as<std::string>();

@@ -52,6 +52,7 @@ struct CampaignSection {
   bool fe_export = true;
   bool simulate = false;
   std::string model;
+  std::string ra_estimator = "energy";
 
   static void declare_parameters(dealii::ParameterHandler& prm) {
     prm.declare_entry("Manifest", "", dealii::Patterns::Anything(),
@@ -83,6 +84,13 @@ struct CampaignSection {
                       "Put each group's law back in the specimen (the paper's Fig. 10): the "
                       "simulated R(delta_root) against the group's measured curves, misfit per "
                       "group. Uses the Specimen, Material and the model's section.");
+    prm.declare_entry("R(a) estimator", "energy",
+                      dealii::Patterns::Selection("energy|MBT|CC|MCC|CBBM"),
+                      "What gives the initiation (J_tip) and plateau (G_ss) of a raw record "
+                      "without notch-root opening: direct energy, ASTM D5528 MBT, CC, MCC, or CBBM "
+                      "(equivalent crack). The others are reported beside it in "
+                      "campaign_specimens.csv, with a note where they disagree beyond the "
+                      "direct-energy band (docs/design.md, \"Durability campaign\").");
     prm.declare_entry("Simulation model", "auto", dealii::Patterns::Anything(),
                       "Model for Simulate laws: auto (the FEM when built, else the cheapest built "
                       "model) or a model's name (fem, beam, mpm), run with its own section.");
@@ -101,6 +109,7 @@ struct CampaignSection {
     fe_export = prm.get_bool("FE export");
     simulate = prm.get_bool("Simulate laws");
     model = prm.get("Simulation model");
+    ra_estimator = prm.get("R(a) estimator");
     const auto models = campaign_simulation_models();
     if (simulate) {
       if (model == "auto" && !models.empty())
@@ -207,21 +216,13 @@ CampaignInputs campaign_inputs(SceneContext& ctx) {
   in.options.confidence = in.section.confidence;
   in.options.interval = in.section.interval;
   in.options.outlier_mads = in.section.outlier_mads;
-  // Raw records: read and reduced as `reduce` does (Test section; Specimen for the geometry,
-  // which a manifest row's width_mm / arm_thickness_mm override).
+  // Raw records: read and reduced with the scene's one chain, as `reduce` does (a manifest row's
+  // width_mm / arm_thickness_mm / length_mm / a0_mm override its Specimen).
   const auto& t = ctx.parameters().section<TestSection>("Test");
-  in.raw.read = t.read_options(ctx.scene_file);
+  static_cast<analysis::RecordChainOptions&>(in.raw) = ctx.record_chain();
+  in.raw.estimator = analysis::parse_ra_method(in.section.ra_estimator,
+                                               ctx.scene_file + ": Campaign/R(a) estimator");
   const specimen::Specimen s = ctx.specimen();
-  in.raw.specimen.width = s.width;
-  in.raw.specimen.height = s.height;
-  in.raw.specimen.length = s.length;
-  if (t.use_specimen_initial_crack)
-    in.raw.specimen.initial_crack = s.initial_crack;
-  in.raw.specimen.pin_to_arm_midplane = t.pin_to_arm_midplane > 0 ? t.pin_to_arm_midplane : NAN;
-  in.raw.specimen.pin_to_block_edge = t.pin_to_block_edge > 0 ? t.pin_to_block_edge : NAN;
-  in.raw.reduce.large_displacement_correction = t.large_displacement_correction;
-  in.raw.reduce.plateau_fraction = t.plateau_fraction;
-  in.raw.reduce.smoothing_window = t.smoothing_window > 0 ? t.smoothing_window : NAN;
   // DIC sets (a row naming a folder): the DIC step with the DIC section, then read as a record
   // dic hands reduce (campaign_dic.h).
   CampaignDicSets sets;

@@ -39,7 +39,7 @@ DicStepOptions dic_options(SceneContext& ctx) {
                      "opening, load) that the DIC frames belong to; it lists " +
                      std::to_string(machine.size()));
   o.machine_record = machine.front();
-  o.machine_columns = t.columns;
+  o.machine_read = ctx.record_chain().read;
   o.initial_crack = ctx.specimen().initial_crack;
   return o;
 }

@@ -139,13 +139,17 @@ const char* fit_kind = "fiberbridge identify fit";
 /// fits them).
 const std::vector<analysis::TestRecord>& scene_records(SceneContext& ctx) {
   if (!ctx.records) {
+    // After `dic` (without reduce) the records are the ones dic wrote, read as reduce reads
+    // them (item_reduce.cc); Test/Files then names the machine record.
     const auto& test = ctx.parameters().section<TestSection>("Test");
-    const analysis::RecordReadOptions read = test.read_options(ctx.scene_file);
-    auto records = std::make_shared<std::vector<analysis::TestRecord>>();
-    for (const auto& path : test.resolved_files(ctx.scene_file))
-      for (auto& r : analysis::read_test_records(path, read))
-        records->push_back(std::move(r));
-    ctx.records = std::move(records);
+    analysis::RecordReadOptions read = ctx.record_chain().read;
+    std::vector<std::string> files = test.resolved_files(ctx.scene_file);
+    if (!ctx.records_from_dic.empty()) {
+      files = ctx.records_from_dic;
+      read.columns = {};
+    }
+    ctx.records =
+        std::make_shared<std::vector<analysis::TestRecord>>(analysis::read_records(files, read));
   }
   if (ctx.records->empty())
     throw InputError(ctx.scene_file + ": 'identify' needs records in Test/Files");
@@ -281,8 +285,9 @@ void check_identify_item(SceneContext& ctx) {
   // The forward model's own section is checked here too (the FEM's keys), before anything runs.
   forward_model_of(ctx, ctx.parameters().section<IdentifySection>("Identify"));
   // The records are small: reading them is the check of Test. When reduce runs, it reads them
-  // (its check has the Test section) and hands them on.
-  if (!ctx.run_items.count("reduce"))
+  // (its check has the Test section) and hands them on; when dic runs, the records are the
+  // ones it will write (its check reads the machine record).
+  if (!ctx.run_items.count("reduce") && !ctx.run_items.count("dic"))
     scene_records(ctx);
   ctx.specimen_setup();
 }

@@ -25,37 +25,17 @@ namespace {
 ReduceStepOptions reduce_options(SceneContext& ctx) {
   const auto& t = ctx.parameters().section<TestSection>("Test");
   ReduceStepOptions o;
+  static_cast<analysis::RecordChainOptions&>(o) = ctx.record_chain();
   o.where = ctx.scene_file + ": Specimen";
-  const specimen::Specimen s = ctx.specimen();
-  o.specimen.width = s.width;
-  o.specimen.height = s.height;
-  o.specimen.length = s.length;
   o.files = t.resolved_files(ctx.scene_file);
   if (o.files.empty())
     throw InputError(ctx.scene_file + ": Test/Files lists no record; give one or more CSV files");
-  o.read = t.read_options(ctx.scene_file);
   // With `dic` in the scene, Test/Files is the machine record dic read; reduce reads the record
   // dic wrote from it (dic_record.csv, our column names) once dic has run (item_dic.cc).
   if (!ctx.records_from_dic.empty()) {
     o.files = ctx.records_from_dic;
     o.read.columns = {};
   }
-  o.reduce.large_displacement_correction = t.large_displacement_correction;
-  o.reduce.plateau_fraction = t.plateau_fraction;
-  if (t.use_specimen_initial_crack)
-    o.specimen.initial_crack = s.initial_crack;
-  o.reduce.smoothing_window = t.smoothing_window > 0 ? t.smoothing_window : NAN;
-  o.specimen.pin_to_arm_midplane = t.pin_to_arm_midplane > 0 ? t.pin_to_arm_midplane : NAN;
-  o.specimen.pin_to_block_edge = t.pin_to_block_edge > 0 ? t.pin_to_block_edge : NAN;
-  // CBBM (equivalent crack, docs/design.md section 6): the arms' G13 and E22 from the Material
-  // section. A record without crack readings is reduced against the equivalent crack;
-  // Test/Crack length = equivalent asks for it with readings too (test_section.h).
-  const specimen::Material m = ctx.material();
-  o.reduce.shear_modulus = m.G_LT;
-  o.reduce.transverse_modulus = m.E_T;
-  // Without crack readings a0 comes from the Specimen.
-  o.reduce.initial_crack_without_readings = s.initial_crack;
-  o.reduce.use_equivalent_crack = t.crack_length == "equivalent";
   return o;
 }
 

@@ -13,15 +13,9 @@ ReduceOutcome run_reduce(const ReduceStepOptions& o, const std::string& out_dir,
   o.specimen.check_test_geometry(o.where);
   // Read every record, reduce each to R(a), average them.
   ReduceOutcome r;
-  for (const auto& f : o.files)
-    for (auto& rec : analysis::read_test_records(f, o.read))
-      r.records.push_back(std::move(rec));
+  r.records = analysis::read_records(o.files, o.read);
   bool any_root = false, all_root = true;
   for (const auto& rec : r.records) {
-    for (const auto& other : r.reduced)
-      if (other.name == rec.name)
-        throw InputError(rec.source + ": record name '" + rec.name +
-                         "' repeats a record already read; give each record its own name");
     r.reduced.push_back(analysis::reduce_record(rec, o.specimen, o.reduce));
     any_root = any_root || !rec.delta_root.empty();
     all_root = all_root && !rec.delta_root.empty();

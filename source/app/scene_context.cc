@@ -1,6 +1,7 @@
 #include "fiberbridge/app/scene_context.h"
 
 #include "fiberbridge/app/scene.h"
+#include "fiberbridge/app/test_section.h"
 #include "fiberbridge/law/law_spec.h"
 
 namespace fiberbridge::app {
@@ -43,6 +44,11 @@ SpecimenSetup SceneContext::specimen_setup() const {
   if (handed_specimen)
     return *handed_specimen;
   return {parameters().specimen(), parameters().material(), SpecimenSource::section};
+}
+
+analysis::RecordChainOptions SceneContext::record_chain() const {
+  return parameters().section<TestSection>("Test").chain_options(scene_file, specimen(),
+                                                                 material());
 }
 
 SceneContext SceneContext::derived(const std::string& dir, HandOn what,

@@ -30,13 +30,14 @@ void TestSection::declare_parameters(dealii::ParameterHandler& prm) {
                     "section 6) or an iconv name such as CP1250, CP932, GBK, EUC-KR, UTF-16LE.");
   prm.declare_entry("Crack length", "auto", dealii::Patterns::Selection("auto|measured|equivalent"),
                     "Where crack lengths come from: auto (the a_mm column when the file has one), "
-                    "measured (a_mm required) or equivalent (any a_mm ignored: R against the "
-                    "equivalent crack length from the compliance).");
+                    "measured (a_mm required) or equivalent (R against the equivalent crack "
+                    "length from the compliance; readings, when the file has them, give a0 and "
+                    "are shown beside), as --crack-length.");
   prm.declare_entry("Use specimen initial crack", "false", dealii::Patterns::Bool(),
                     "a0 = Specimen/Initial crack; false: each record's first crack reading.");
   prm.declare_entry("Smoothing window", "0", dealii::Patterns::Double(0),
-                    "Window in crack length of the direct-energy slope fits in mm; 0: automatic "
-                    "(the larger of 10 reading spacings and 4 arm thicknesses).");
+                    "Window in crack length of the direct-energy slope fits in mm; 0: chosen "
+                    "from the data at each reading (docs/design.md section 6, reduce).");
   prm.declare_entry("Large displacement correction", "true", dealii::Patterns::Bool(),
                     "ASTM D5528 / ISO 15024 F and N on MBT, CC, MCC.");
   prm.declare_entry("Pin to arm mid-plane", "0", dealii::Patterns::Double(0),
@@ -76,14 +77,33 @@ std::vector<std::string> TestSection::resolved_files(const std::string& scene_fi
 }
 
 analysis::RecordReadOptions TestSection::read_options(const std::string& scene_file) const {
-  analysis::RecordReadOptions read;
-  read.columns = analysis::RecordColumnMap::parse(columns, scene_file + ": Test/Columns");
-  read.crack_back_tolerance = crack_back_tolerance;
-  read.encoding = encoding == "auto" ? "" : encoding;
-  read.crack_length = crack_length == "measured"     ? analysis::CrackLengthSource::measured
-                      : crack_length == "equivalent" ? analysis::CrackLengthSource::equivalent
-                                                     : analysis::CrackLengthSource::automatic;
-  return read;
+  return chain_options(scene_file, specimen::Specimen::unknown(), specimen::Material{}).read;
+}
+
+analysis::RecordChainOptions TestSection::chain_options(const std::string& scene_file,
+                                                        const specimen::Specimen& s,
+                                                        const specimen::Material& m) const {
+  analysis::RecordChainOptions o;
+  o.read.columns = analysis::RecordColumnMap::parse(columns, scene_file + ": Test/Columns");
+  o.read.crack_back_tolerance = crack_back_tolerance;
+  o.read.encoding = encoding == "auto" ? "" : encoding;
+  analysis::set_crack_length(o, crack_length, scene_file + ": Test/Crack length");
+  o.specimen.width = s.width;
+  o.specimen.height = s.height;
+  o.specimen.length = s.length;
+  if (use_specimen_initial_crack)
+    o.specimen.initial_crack = s.initial_crack;
+  o.specimen.pin_to_arm_midplane = pin_to_arm_midplane > 0 ? pin_to_arm_midplane : NAN;
+  o.specimen.pin_to_block_edge = pin_to_block_edge > 0 ? pin_to_block_edge : NAN;
+  o.reduce.large_displacement_correction = large_displacement_correction;
+  o.reduce.plateau_fraction = plateau_fraction;
+  o.reduce.smoothing_window = smoothing_window > 0 ? smoothing_window : NAN;
+  // CBBM (equivalent crack, docs/design.md section 6): the arms' G13 and E22. Without crack
+  // readings a0 comes from the Specimen.
+  o.reduce.shear_modulus = m.G_LT;
+  o.reduce.transverse_modulus = m.E_T;
+  o.reduce.initial_crack_without_readings = s.initial_crack;
+  return o;
 }
 
 } // namespace fiberbridge::app

@@ -12,51 +12,6 @@
 
 namespace fiberbridge::dic {
 
-namespace {
-
-std::string trim(const std::string& s) {
-  return trim_blanks(s);
-}
-
-/// our name -> file header, from "ours: theirs, ..." (entries for other names are ignored).
-std::map<std::string, std::string> parse_columns(const std::string& text,
-                                                 const std::string& where) {
-  std::map<std::string, std::string> map;
-  for (const auto& entry : split_list(text, ',')) {
-    const auto colon = entry.find(':');
-    if (colon == std::string::npos)
-      throw InputError(where + ": entry '" + entry + "' has no ':' (expected 'our_name: header')");
-    map[trim(entry.substr(0, colon))] = trim(entry.substr(colon + 1));
-  }
-  return map;
-}
-
-} // namespace
-
-MachineRecord read_machine_record(const std::string& path, const std::string& columns,
-                                  const std::string& where) {
-  const auto map = parse_columns(columns, where);
-  const auto header = [&](const char* ours) {
-    const auto it = map.find(ours);
-    return it == map.end() ? std::string(ours) : it->second;
-  };
-  const CsvTable table = CsvTable::read(path);
-  MachineRecord r;
-  r.source = path;
-  r.time = table.numeric(header("time_s"));
-  r.opening = table.numeric(header("opening_mm"));
-  r.load = table.numeric(header("load_N"));
-  for (auto& o : r.opening)
-    o *= units::mm;
-  if (r.time.size() < 2)
-    throw InputError(path + ": the machine record needs at least 2 rows");
-  for (std::size_t i = 1; i < r.time.size(); ++i)
-    if (r.time[i] < r.time[i - 1])
-      throw InputError(path + ":" + std::to_string(table.line_of_row(i)) +
-                       ": time decreases (machine record rows must be in time order)");
-  return r;
-}
-
 void machine_at(const MachineRecord& r, double t, double& opening, double& load) {
   const auto it = std::upper_bound(r.time.begin(), r.time.end(), t);
   std::size_t j = static_cast<std::size_t>(it - r.time.begin());

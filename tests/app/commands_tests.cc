@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <string>
+#include <tuple>
 
 using namespace fiberbridge;
 
@@ -70,17 +71,22 @@ TEST(TestSectionStruct, FilesAreTrimmedAndAMissingRecordIsNamed) {
   }
 }
 
+// One word, as --crack-length (analysis::set_crack_length): `equivalent` reduces against the
+// equivalent crack and still reads the readings (they give a0 and are shown beside).
 TEST(TestSectionStruct, CrackLengthSourceReachesTheReader) {
-  for (const auto& [text, source] :
-       {std::pair{"auto", analysis::CrackLengthSource::automatic},
-        std::pair{"measured", analysis::CrackLengthSource::measured},
-        std::pair{"equivalent", analysis::CrackLengthSource::equivalent}}) {
+  for (const auto& [text, source, equivalent] :
+       {std::tuple{"auto", analysis::CrackLengthSource::automatic, false},
+        std::tuple{"measured", analysis::CrackLengthSource::measured, false},
+        std::tuple{"equivalent", analysis::CrackLengthSource::automatic, true}}) {
     dealii::ParameterHandler prm;
     app::declare_section<app::TestSection>(prm, "Test");
     prm.enter_subsection("Test");
     prm.set("Crack length", text);
     prm.leave_subsection();
     const auto t = app::parse_section<app::TestSection>(prm, "Test");
+    const auto o = t.chain_options("scene.prm", specimen::Specimen::unknown(), {});
+    EXPECT_EQ(o.read.crack_length, source) << text;
+    EXPECT_EQ(o.reduce.use_equivalent_crack, equivalent) << text;
     EXPECT_EQ(t.read_options("scene.prm").crack_length, source) << text;
   }
 }

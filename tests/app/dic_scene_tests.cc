@@ -7,7 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 
 using namespace fiberbridge;
 using namespace fiberbridge::test;
@@ -254,4 +257,93 @@ TEST(AppDic, CampaignManifestTakesDicSets) {
             std::string::npos)
       << err2.str();
   EXPECT_FALSE(fs::exists(dir / "out" / "campaign_table1.csv"));
+}
+
+namespace {
+
+void replace_once(std::string& text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+}
+
+/// The data rows of a dic_record.csv (the comment lines name the door, the rows must not differ).
+std::vector<std::string> record_rows(const fs::path& p) {
+  std::ifstream in(p);
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line[0] != '#')
+      rows.push_back(line);
+  return rows;
+}
+
+} // namespace
+
+// One chain, one door (issue 39 item 3): the machine record is read as `reduce` reads a record.
+// The header 'Time (s)' is matched by the map 'time_s: Time' (the old DIC reader wanted the header
+// in full), and a German testXpert-style export of the same record (';', decimal commas, kN) gives
+// the same test record. A DIC set in a campaign's manifest gives the record the scene's `dic`
+// gives.
+TEST(AppDic, MachineRecordAndDicSetReadAsReduceReads) {
+  const fs::path dir = work("dic_one_door");
+  fs::remove_all(dir);
+  write_test(dir / "set1", 100, 200);
+  write_test(dir / "set2", 200, 200);
+  {
+    // The plain record's numbers (as written, 6 digits), the load in kN.
+    const CsvTable plain_machine = CsvTable::read((dir / "set1" / "machine.csv").string());
+    const auto t = plain_machine.numeric("Time (s)"), x = plain_machine.numeric("Extension (mm)"),
+               p = plain_machine.numeric("Load (N)");
+    std::ofstream m(dir / "set1" / "maschine.csv");
+    m << "Zeit (s);Standardweg (mm);Standardkraft (kN)\r\n";
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      std::ostringstream row;
+      row << std::setprecision(15) << t[i] << ";" << x[i] << ";" << p[i] / 1e3;
+      std::string text = row.str();
+      std::replace(text.begin(), text.end(), '.', ',');
+      m << text << "\r\n";
+    }
+  }
+  const auto run_in = [&](const std::string& scene_text, const std::string& out) {
+    std::ofstream(dir / "scene.prm") << scene_text;
+    const std::string cmd = "cd '" + dir.string() + "' && '" + FIBERBRIDGE_BIN +
+                            "' run scene.prm --set 'Output directory=" + out +
+                            "' > stdout.txt 2> stderr.txt";
+    return std::system(cmd.c_str());
+  };
+  std::string plain = scene;
+  replace_once(plain, "frames/dcb_*_0.csv", "set1/frames/dcb_*_0.csv");
+  replace_once(plain, "set Files = machine.csv", "set Files = set1/machine.csv");
+  replace_once(plain, "time_s: Time (s), opening_mm: Extension (mm), load_N: Load (N)",
+               "time_s: Time, opening_mm: Extension, load_N: Load");
+  ASSERT_EQ(run_in(plain, "plain"), 0) << "see " << (dir / "stderr.txt");
+  std::string german = plain;
+  replace_once(german, "set Files = set1/machine.csv", "set Files = set1/maschine.csv");
+  replace_once(german, "time_s: Time, opening_mm: Extension, load_N: Load",
+               "time_s: Zeit, opening_mm: Standardweg, load_N: Standardkraft");
+  ASSERT_EQ(run_in(german, "german"), 0) << "see " << (dir / "stderr.txt");
+  const auto a = record_rows(dir / "plain" / "dic_record.csv");
+  const CsvTable ta = CsvTable::read((dir / "plain" / "dic_record.csv").string());
+  const CsvTable tb = CsvTable::read((dir / "german" / "dic_record.csv").string());
+  ASSERT_EQ(ta.n_rows(), 41u);
+  ASSERT_EQ(tb.n_rows(), ta.n_rows());
+  // The German file holds the same numbers (the load in kN to 15 digits): the record agrees to
+  // its 10 printed digits (1e-9 of the value).
+  for (const char* c : {"time_s", "opening_mm", "load_N", "a_mm", "delta_root_mm"}) {
+    const auto x = ta.numeric(c), y = tb.numeric(c);
+    for (std::size_t i = 0; i < x.size(); ++i)
+      EXPECT_NEAR(y[i], x[i], 1e-9 * std::abs(x[i]) + 1e-12) << c << " row " << i;
+  }
+  // The campaign's DIC set: the same rows, to the digit.
+  std::ofstream(dir / "manifest.csv") << "file,material,cycles,specimen,j_tip_J_m2,delta_c_mm\n"
+                                         "set1,X,0,s1,300,0.2\nset2,X,0,s2,300,0.2\n";
+  std::string campaign = scene;
+  replace_once(campaign, "set Run = dic, reduce", "set Run = campaign");
+  replace_once(campaign, "time_s: Time (s), opening_mm: Extension (mm), load_N: Load (N)",
+               "time_s: Time, opening_mm: Extension, load_N: Load");
+  campaign += "subsection Campaign\n  set Manifest = manifest.csv\n  set Bootstrap samples = 20\n"
+              "  set Reference materials =\nend\n"
+              "subsection Fit\n  set Delta 1 = 0.02\n  set Delta 2 = 0.08\nend\n";
+  ASSERT_EQ(run_in(campaign, "campaign"), 0) << "see " << (dir / "stderr.txt");
+  EXPECT_EQ(record_rows(dir / "campaign" / "campaign_dic_X_c0_s1.csv"), a);
 }

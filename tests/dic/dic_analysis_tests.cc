@@ -275,21 +275,19 @@ TEST(DicRecord, FramesMatchedToTheMachineRecordByTime) {
     test::write_frame(p, dcb.frame(hist.s_m(k), hist.lambda(k), 9u + k), g, Out::plain);
     paths.push_back(p);
   }
-  // The machine: 10 Hz from t = 0 to 9.5 s, opening 0.1 mm/s, load 10 N/s.
-  const std::string m = (dir / "machine.csv").string();
-  {
-    std::ofstream out(m);
-    out << "Time,Extension,Load\n";
-    for (int i = 0; i <= 95; ++i)
-      out << 0.1 * i << "," << 0.01 * i << "," << 1.0 * i << "\n";
+  // The machine: 10 Hz from t = 0 to 9.5 s, opening 0.1 mm/s, load 10 N/s (read from files by the
+  // app, as `reduce` reads records: tests/app/dic_machine_record_tests.cc).
+  MachineRecord rec;
+  for (int i = 0; i <= 95; ++i) {
+    rec.time.push_back(0.1 * i);
+    rec.opening.push_back(0.01 * i * 1e-3);
+    rec.load.push_back(1.0 * i);
   }
   DicOptions o;
   o.geometry = g;
   o.clock.frame_rate = 1;
   o.clock.first_frame_time = 0.25; // the first image 0.25 s after the machine started
   const DicAnalysis a = analyse_frames(order_frames(paths, "test"), o);
-  const MachineRecord rec =
-      read_machine_record(m, "time_s: Time, opening_mm: Extension, load_N: Load", "Test/Columns");
   std::vector<std::string> notes;
   const auto rows = match_to_machine(a, rec, 0.1, notes);
   ASSERT_EQ(rows.size(), 10u); // frames at 0.25 ... 9.25 s; 10.25 and 11.25 s are past the record

@@ -164,8 +164,9 @@ DicRun read_back(const VirtualRun& run, const std::function<void(dic::DicOptions
   DicRun r;
   const auto paths = dic::expand_frame_list(d.frames, run.vt(), "DIC/Frames");
   r.analysis = dic::analyse_frames(dic::order_frames(paths, "DIC/Frames"), o);
-  const auto machine =
-      dic::read_machine_record(run.vt() + "/" + machine_files, machine_columns, "Test/Files");
+  analysis::RecordReadOptions read;
+  read.columns = analysis::RecordColumnMap::parse(machine_columns, "Test/Columns");
+  const auto machine = app::read_machine_record(run.vt() + "/" + machine_files, read);
   std::vector<std::string> notes;
   r.rows = dic::match_to_machine(r.analysis, machine, run.spec.initial_crack, notes);
   r.truth = read_truth(run.vt() + "/virtual_test_truth.csv");

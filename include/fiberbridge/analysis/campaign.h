@@ -7,6 +7,7 @@
 #include "fiberbridge/analysis/bridging_model.h"
 #include "fiberbridge/analysis/inverse.h"
 #include "fiberbridge/analysis/rdelta_data.h"
+#include "fiberbridge/analysis/record_chain.h"
 #include "fiberbridge/analysis/record_reduction.h"
 #include "fiberbridge/analysis/steady_state.h"
 #include "fiberbridge/analysis/test_record.h"
@@ -60,17 +61,26 @@ const char* to_string(SpecimenInput k);
 /// A folder -> dic_set; a file: delta_mm and R_J_m2 in its header -> rdelta, else raw_record.
 SpecimenInput classify_specimen_file(const std::string& path);
 
-/// How raw records are read and reduced (the scene's Test section and Specimen).
-struct RawRecordOptions {
-  RecordReadOptions read;
-  /// Per-row width / arm thickness / length / a0 override it; nothing known by default
-  /// (Specimen::unknown).
-  specimen::Specimen specimen = specimen::Specimen::unknown();
-  ReduceOptions reduce;
+/// The R(a) estimators of a raw record (record_reduction.h), in the order campaign tables list
+/// them: direct energy, ASTM D5528 MBT, CC, MCC, and CBBM's equivalent crack.
+enum class RaMethod { energy, MBT, CC, MCC, CBBM };
+constexpr std::size_t n_ra_methods = 5;
+const char* to_string(RaMethod m);
+/// "energy", "MBT", "CC", "MCC" or "CBBM"; InputError naming `where` for another word.
+RaMethod parse_ra_method(const std::string& word, const std::string& where);
+
+/// How raw records are read and reduced: the scene's one RecordChainOptions (record_chain.h;
+/// a row's width_mm / arm_thickness_mm / length_mm / a0_mm override its Specimen), and the DIC
+/// step for DIC sets.
+struct RawRecordOptions : RecordChainOptions {
   /// A DIC set's test record (its frames through the DIC step and matched to its machine record,
-  /// as `dic` hands `reduce` one); the app provides it (the dic library sits above analysis).
+  /// as `dic` hands `reduce` one); the app provides it (the dic library sits beside analysis).
   /// The record is then reduced as a raw record. Empty: DIC sets are refused.
   std::function<TestRecord(const CampaignRow&)> dic_set;
+  /// Which estimator gives an R(a)-only specimen's initiation and plateau (Campaign/R(a)
+  /// estimator; docs/design.md, "Durability campaign", says why the default is what it is). The
+  /// others are reported beside it.
+  RaMethod estimator = RaMethod::energy;
 };
 
 /// One specimen as loaded: its R(delta_root) curve when it has one, else (a raw record without
@@ -80,11 +90,17 @@ struct CampaignSpecimen {
   SpecimenInput input = SpecimenInput::rdelta;
   bool has_rdelta = false;
   Replicate curve;                        ///< R(delta) [SI]; a[] when the file has a_mm
-  double initiation = NAN, plateau = NAN; ///< R(a)-only specimens [J/m^2]
-  bool steady = false;                    ///< its own curve reaches a steady state
-  SteadyState own;                        ///< its own steady state (when steady)
-  double l_b = NAN;                       ///< crack growth to delta = d1 [m] (needs a_mm)
-  std::vector<std::string> notes;         ///< why not steady, and what else to know
+  double initiation = NAN, plateau = NAN; ///< R(a)-only specimens, by the estimator [J/m^2]
+  /// R(a)-only specimens: every estimator's initiation and plateau (RaMethod order; NaN where the
+  /// record cannot give it, e.g. MBT without crack readings).
+  std::array<MethodSummary, n_ra_methods> methods;
+  /// Half-width of the direct-energy band of the plateau mean: the band's mean half-width over
+  /// the plateau over sqrt(plateau extent / window) [J/m^2]
+  double plateau_band = NAN;
+  bool steady = false;            ///< its own curve reaches a steady state
+  SteadyState own;                ///< its own steady state (when steady)
+  double l_b = NAN;               ///< crack growth to delta = d1 [m] (needs a_mm)
+  std::vector<std::string> notes; ///< why not steady, and what else to know
 };
 
 /// A material name as a part of file names: letters, digits, '-' and '_' kept, anything else

@@ -16,6 +16,7 @@ struct CampaignResult {
   CampaignOptions options;
   std::vector<std::string> reference_materials;
   std::vector<CampaignSpecimen> specimens;
+  RaMethod estimator = RaMethod::energy; ///< of R(a)-only specimens (RawRecordOptions)
   std::vector<CampaignGroup> groups;
   std::vector<CampaignDegradation> degradation;
   CampaignRanking ranking;

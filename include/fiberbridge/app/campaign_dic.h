@@ -17,8 +17,10 @@ namespace fiberbridge::app {
 struct CampaignDicSets {
   DicSection dic;
   TestSection test;
-  analysis::RecordReadOptions read; ///< the Test section's options (columns: ours, as dic writes)
-  double scene_initial_crack = 0;   ///< [m] Specimen/Initial crack
+  /// The scene's one chain's read options (SceneContext::record_chain): the machine record is
+  /// read with them, and the record the DIC step makes with them less the column map.
+  analysis::RecordReadOptions read;
+  double scene_initial_crack = 0; ///< [m] Specimen/Initial crack
 };
 
 /// The set's test record; `record_text` receives the dic_record.csv text it was read from (the

@@ -3,8 +3,10 @@
 // DIC frames and the machine record in, dic_record.csv (the test record `reduce` reads), the
 // per-frame table, the plots and the summary block `dic` out (docs/design.md section 6,
 // "DIC frames in").
+#include "fiberbridge/analysis/test_record.h"
 #include "fiberbridge/core/summary.h"
 #include "fiberbridge/dic/dic_analysis.h"
+#include "fiberbridge/dic/dic_record.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -40,11 +42,31 @@ struct DicSection {
 struct DicStepOptions {
   std::vector<std::string> frames; ///< existing paths (any order; sorted by image number)
   dic::DicOptions dic;
-  std::string machine_record;  ///< the testing machine's record (time, opening, load)
-  std::string machine_columns; ///< "time_s: ..., opening_mm: ..., load_N: ..."
-  double initial_crack = 0;    ///< [m] a at the notch root
+  std::string machine_record; ///< the testing machine's record (time, opening, load)
+  /// How it is read: the one chain's read options (analysis/record_chain.h; Test/Columns,
+  /// Test/Encoding), so that it is matched and converted exactly as `reduce` reads a record.
+  analysis::RecordReadOptions machine_read;
+  double initial_crack = 0; ///< [m] a at the notch root
   std::string where = "dic";
 };
+
+/// The machine record read as `reduce` reads a record (analysis::read_test_records: any export
+/// layout, units and encoding, the column map matched the same way, the same cleaning); its crack
+/// and delta_root columns are not read (DIC gives them). InputError naming the file when it has
+/// no time column or holds more than one record.
+dic::MachineRecord read_machine_record(const std::string& path, analysis::RecordReadOptions read);
+
+/// The frames analysed and matched by time to the machine record: what `dic` writes and what a
+/// campaign's DIC set reduces (one code for both doors).
+struct DicMatch {
+  dic::DicAnalysis analysis;
+  std::vector<dic::DicRecordRow> rows;
+  std::vector<std::string> notes;
+};
+DicMatch match_dic_frames(const DicStepOptions& options);
+/// dic_record.csv's provenance lines for the matched rows; `what` says whose record it is.
+std::vector<std::string> dic_record_comments(const DicStepOptions& options, const DicMatch& match,
+                                             const std::string& what);
 
 struct DicOutcome {
   dic::DicAnalysis analysis;

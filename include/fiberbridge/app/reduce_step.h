@@ -1,6 +1,7 @@
 #pragma once
 // `reduce` as a step shared by the command line (fiberbridge reduce) and the scene item
 // (section Test): raw DCB records in, R(a) by direct energy and by MBT/CC/MCC out.
+#include "fiberbridge/analysis/record_chain.h"
 #include "fiberbridge/analysis/record_reduction.h"
 #include "fiberbridge/analysis/test_record.h"
 #include "fiberbridge/core/summary.h"
@@ -11,12 +12,10 @@
 
 namespace fiberbridge::app {
 
-struct ReduceStepOptions {
+/// The files and the one chain's settings (analysis/record_chain.h): a scene's from
+/// record_chain_options (test_section.h), the command line's from its options.
+struct ReduceStepOptions : analysis::RecordChainOptions {
   std::vector<std::string> files;
-  analysis::RecordReadOptions read;
-  /// Nothing known by default (Specimen::unknown): the scene or the command line fills it.
-  specimen::Specimen specimen = specimen::Specimen::unknown();
-  analysis::ReduceOptions reduce;
   std::string where = "reduce"; ///< names the geometry's origin in messages (scene or CLI)
 };
 

@@ -6,6 +6,7 @@
 // identification, the crack law and the specimen set-up with their sources, the simulation
 // results.
 #include "fiberbridge/analysis/rdelta_data.h"
+#include "fiberbridge/analysis/record_chain.h"
 #include "fiberbridge/analysis/test_record.h"
 #include "fiberbridge/app/scene_parameters.h"
 #include "fiberbridge/core/summary.h"
@@ -116,6 +117,10 @@ struct SceneContext {
   SpecimenSetup specimen_setup() const;
   specimen::Specimen specimen() const { return specimen_setup().specimen; }
   specimen::Material material() const { return specimen_setup().material; }
+  /// How this scene reads and reduces test records: the Test section with specimen() and
+  /// material() (TestSection::chain_options). reduce, dic, the campaign and identify all take
+  /// this one value (analysis/record_chain.h).
+  analysis::RecordChainOptions record_chain() const;
   /// Path inside the output directory.
   std::string out(const std::string& file) const { return output_dir + "/" + file; }
 

@@ -1,7 +1,9 @@
 #pragma once
 // The scene's `Test` section (raw DCB records), a step-44 section struct (section.h) read by both
 // `reduce` and `identify`, so that the two items see the same records the same way.
+#include "fiberbridge/analysis/record_chain.h"
 #include "fiberbridge/analysis/test_record.h"
+#include "fiberbridge/specimen/specimen.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -30,6 +32,12 @@ struct TestSection {
   /// The records' paths resolved against the scene's folder; each must exist (InputError naming
   /// the scene and Test/Files). An empty list is returned as such: the items say what they need.
   std::vector<std::string> resolved_files(const std::string& scene_file) const;
+  /// The one chain's settings (analysis/record_chain.h) from this section, the Specimen's
+  /// geometry (a0 only with `use_specimen_initial_crack`, and as the a0 of records without
+  /// readings) and the Material's G_LT and E_T (CBBM). Every scene door reads and reduces with it.
+  analysis::RecordChainOptions chain_options(const std::string& scene_file,
+                                             const specimen::Specimen& specimen,
+                                             const specimen::Material& material) const;
   /// How the records are read: the column map (errors name the scene and Test/Columns), where
   /// the crack lengths come from and the crack-back tolerance.
   analysis::RecordReadOptions read_options(const std::string& scene_file) const;

@@ -10,19 +10,14 @@
 
 namespace fiberbridge::dic {
 
+/// The machine record's channels in time order; the app reads it as `reduce` reads a record
+/// (app/dic_step.h, read_machine_record), so that one column map and one reader serve both.
 struct MachineRecord {
   std::string source;
   std::vector<double> time;    ///< [s], not decreasing
   std::vector<double> opening; ///< [m]
   std::vector<double> load;    ///< [N]
 };
-
-/// Reads the machine record (CSV with a header, core/csv.h) with `columns` = "time_s: Time,
-/// opening_mm: Extension, load_N: Load" (our names before ':'; others of Test/Columns such as a_mm
-/// are ignored: the crack length is what DIC gives). InputError naming `where` or file:line for a
-/// missing column, a non-number, decreasing time or fewer than 2 rows.
-MachineRecord read_machine_record(const std::string& path, const std::string& columns,
-                                  const std::string& where);
 
 /// Linear interpolation of the record at t (inside [time.front(), time.back()]).
 void machine_at(const MachineRecord& record, double t, double& opening, double& load);
