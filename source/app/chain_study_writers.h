@@ -3,6 +3,7 @@
 // (docs/design.md section 4, "Parse once and writers apart").
 #include "fiberbridge/app/scene_context.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,14 @@ struct ChainRow {
   bool targets_met = false;
   std::string missed; ///< which of issue 39's targets it missed ("; "-separated)
   double fem_wall_s = 0, chain_wall_s = 0;
+  /// `identify` on the same virtual test (Chain study/Identify): the machine record with the DIC
+  /// crack lengths, no delta_root; the identified law's sigma at the same d1, d2, its J_tip,
+  /// G_ss and delta_c, and its L2 error against the truth. outcome "" when it did not run.
+  struct Identified {
+    std::string outcome, reason;
+    double j_tip = NAN, g_ss = NAN, delta_c = NAN, sigma1 = NAN, sigma2 = NAN, law_l2_rel = NAN;
+    double wall_s = 0;
+  } identified;
 };
 
 /// chain_recovery.csv, chain_recovery_vs_frame_rate.png, chain_recovery_vs_noise.png and the

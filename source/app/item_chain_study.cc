@@ -38,6 +38,7 @@ struct ChainStudySection {
   std::string table1;
   std::string chain_run;
   bool reuse = true;
+  bool identify = false;
 
   static void declare_parameters(dealii::ParameterHandler& prm) {
     prm.declare_entry("Cases", "all", dealii::Patterns::Anything(),
@@ -52,6 +53,11 @@ struct ChainStudySection {
                       "Keep a case's virtual test from an earlier run into the same output "
                       "directory when it was made from the same scene text and settings: the FEM "
                       "does not change when the chain's estimators do (the chain always runs).");
+    prm.declare_entry("Identify", "false", dealii::Patterns::Bool(),
+                      "Also run `dic, identify` on each virtual test (the machine record with the "
+                      "DIC crack lengths, no delta_root; the Identify section's defaults: the beam "
+                      "forward model) and tabulate its recovery in chain_identify.csv (about 20 s "
+                      "a case).");
     prm.declare_entry("Chain run", "dic, reduce, extract, fit", dealii::Patterns::Anything(),
                       "The Run list set on each generated dic_scene.prm: the chain as a user runs "
                       "it on a virtual test.");
@@ -61,6 +67,7 @@ struct ChainStudySection {
     table1 = prm.get("Table 1");
     chain_run = prm.get("Chain run");
     reuse = prm.get_bool("Reuse virtual tests");
+    identify = prm.get_bool("Identify");
   }
 };
 
@@ -113,6 +120,32 @@ double law_l2_error(const law::TractionLaw& truth, const ChainRow& r, double d1_
     den += t * t;
   }
   return den > 0 ? std::sqrt(num / den) : std::nan("");
+}
+
+/// The identified law from `identify`'s block of summary.json: its trilinear evaluated at the
+/// paper's d1 and d2 (identify frees the breakpoints), J_tip, G_ss, delta_c, L2 against `truth`.
+void read_identified(const std::string& summary_path, const law::TractionLaw& truth, double d1,
+                     double d2, ChainRow::Identified& id) {
+  std::ifstream f(summary_path);
+  if (!f)
+    throw ComputationError("chain study: identify left no " + summary_path);
+  const Json s = Json::parse(f).at("identify");
+  auto get = [](const Json& j, const char* key) {
+    return j.contains(key) && j[key].is_number() ? j[key].get<double>() : std::nan("");
+  };
+  const Json& t = s.at("trilinear");
+  const double id1 = get(t, "d1_mm"), is1 = get(t, "sigma1_kPa"), id2 = get(t, "d2_mm"),
+               is2 = get(t, "sigma2_kPa"), idc = get(t, "delta_c_mm");
+  id.j_tip = get(s, "J_tip_J_m2");
+  id.g_ss = get(s, "G_ss_J_m2");
+  id.delta_c = idc;
+  id.sigma1 = trilinear_at(d1, id1, is1, id2, is2, idc);
+  id.sigma2 = trilinear_at(d2, id1, is1, id2, is2, idc);
+  ChainRow as_fit;
+  as_fit.sigma1 = is1;
+  as_fit.sigma2 = is2;
+  as_fit.delta_c = idc;
+  id.law_l2_rel = law_l2_error(truth, as_fit, id1, id2);
 }
 
 /// Issue 39's targets (the defaults, Table 1 laws at 1 Hz): G_ss 2 %, J_tip 10 % or 20 J/m^2,
@@ -195,6 +228,22 @@ ChainRow run_case(const SceneContext& ctx, const ChainStudySection& section, con
   row.chain_wall_s = seconds_since(t0);
   row.law_l2_rel = law_l2_error(*truth, row, d1, d2);
   judge_targets(row);
+  if (section.identify) {
+    // The same virtual test through `dic, identify`: no reduce, so identify fits the record dic
+    // wrote (item_identify.cc), crack lengths from the frames, no delta_root.
+    const std::string id_dir = fs::absolute(dir + "/identify").string();
+    t0 = std::chrono::steady_clock::now();
+    try {
+      run_scene(fem_dir + "/virtual_test/dic_scene.prm",
+                {"Run=dic, identify", "Output directory=" + id_dir});
+      read_identified(id_dir + "/summary.json", *truth, d1, d2, row.identified);
+      row.identified.outcome = "identified";
+    } catch (const std::exception& e) {
+      row.identified.outcome = "refused";
+      row.identified.reason = e.what();
+    }
+    row.identified.wall_s = seconds_since(t0);
+  }
   return row;
 }
 
