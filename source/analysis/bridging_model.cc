@@ -6,13 +6,13 @@
 #include "fiberbridge/analysis/bridging_model.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 
 #include <boost/math/tools/toms748_solve.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <limits>
 #include <string>
 #include <utility>
@@ -23,12 +23,6 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 void check_fiber(const BridgingFiber& f) {
   const std::pair<const char*, double> props[] = {{"fiber modulus E_f [Pa]", f.E_f},
                                                   {"fiber radius r_f [m]", f.r_f},
@@ -36,13 +30,13 @@ void check_fiber(const BridgingFiber& f) {
                                                   {"peeling toughness G_c [J/m^2]", f.G_c}};
   for (const auto& [name, value] : props)
     if (!(std::isfinite(value) && value > 0))
-      throw InputError(std::string("bridging fiber: ") + name + " is " + fmt(value) +
+      throw InputError(std::string("bridging fiber: ") + name + " is " + num(value) +
                        ", expected a finite positive value");
 }
 
 void check_slope(double k) {
   if (!(std::isfinite(k) && k >= 0))
-    throw InputError("bridging model: opening slope k = delta/l_b is " + fmt(k) +
+    throw InputError("bridging model: opening slope k = delta/l_b is " + num(k) +
                      ", expected a finite value >= 0");
 }
 
@@ -98,7 +92,7 @@ std::pair<double, double> peeling_r_u(double k, const BridgingFiber& f) {
   const boost::math::tools::eps_tolerance<double> tol(std::numeric_limits<double>::digits - 2);
   const auto bracket = boost::math::tools::toms748_solve(h, lo, hi, h_lo, h_hi, tol, iterations);
   if (iterations >= 100)
-    throw ComputationError("Eq. 14: peeling root for k = " + fmt(k) +
+    throw ComputationError("Eq. 14: peeling root for k = " + num(k) +
                            " did not converge in 100 TOMS 748 iterations");
   const double u = 0.5 * (bracket.first + bracket.second);
   return {1 - u, u};
@@ -121,11 +115,11 @@ std::pair<double, double> r_u(double k, const BridgingFiber& f, BridgingMechanis
 
 void check_stress_args(double delta, double l_b, double rho_b) {
   if (!(std::isfinite(l_b) && l_b > 0))
-    throw InputError("bridging model: zone length l_b is " + fmt(l_b) + " m, expected > 0");
+    throw InputError("bridging model: zone length l_b is " + num(l_b) + " m, expected > 0");
   if (!(std::isfinite(delta) && delta >= 0))
-    throw InputError("bridging model: opening delta is " + fmt(delta) + " m, expected >= 0");
+    throw InputError("bridging model: opening delta is " + num(delta) + " m, expected >= 0");
   if (!(std::isfinite(rho_b) && rho_b >= 0))
-    throw InputError("bridging model: bridged fiber density rho_b is " + fmt(rho_b) +
+    throw InputError("bridging model: bridged fiber density rho_b is " + num(rho_b) +
                      " 1/m^2, expected >= 0");
 }
 
@@ -149,17 +143,17 @@ BridgingFiber seed_bundle_fiber(double G_c) {
 double fiber_strain_exact(double delta, double k, double r, double l_b) {
   check_slope(k);
   if (!(std::isfinite(l_b) && l_b > 0))
-    throw InputError("Eq. 9: zone length l_b is " + fmt(l_b) + " m, expected > 0");
+    throw InputError("Eq. 9: zone length l_b is " + num(l_b) + " m, expected > 0");
   if (!(r >= 0 && r <= 1))
-    throw InputError("Eq. 9: r = 1 - x/l_b is " + fmt(r) + ", expected in [0, 1]");
+    throw InputError("Eq. 9: r = 1 - x/l_b is " + num(r) + ", expected in [0, 1]");
   if (!(std::isfinite(delta) && delta >= 0))
-    throw InputError("Eq. 9: opening delta is " + fmt(delta) + " m, expected >= 0");
+    throw InputError("Eq. 9: opening delta is " + num(delta) + " m, expected >= 0");
   const double x = l_b * (1 - r);
   const double delta_x = k * l_b * r; // delta(x) = k (l_b - x)
   const double stretched = std::sqrt(x * x + 0.25 * (delta + delta_x) * (delta + delta_x));
   const double initial = std::sqrt(x * x + 0.25 * (delta - delta_x) * (delta - delta_x));
   if (initial == 0)
-    throw InputError("Eq. 9: at r = " + fmt(r) +
+    throw InputError("Eq. 9: at r = " + num(r) +
                      " the fiber has zero initial length (zone edge); the strain is unbounded");
   // stretched/initial - 1 without cancellation: stretched^2 - initial^2 = delta * delta(x).
   return delta * delta_x / (initial * (stretched + initial));
@@ -168,13 +162,13 @@ double fiber_strain_exact(double delta, double k, double r, double l_b) {
 double fiber_strain_small_k(double k, double r) {
   check_slope(k);
   if (!(r >= 0 && r < 1))
-    throw InputError("Eq. 9: r = 1 - x/l_b is " + fmt(r) + ", expected in [0, 1)");
+    throw InputError("Eq. 9: r = 1 - x/l_b is " + num(r) + ", expected in [0, 1)");
   return k * k * r / (2 * (1 - r) * (1 - r));
 }
 
 double eq11_factor(double r_b) {
   if (!(r_b >= 0 && r_b < 1))
-    throw InputError("Eq. 11: r_b is " + fmt(r_b) +
+    throw InputError("Eq. 11: r_b is " + num(r_b) +
                      ", expected in [0, 1) (r_b = 1 - x_b/l_b; r_b -> 1 diverges)");
   return factor(r_b, 1 - r_b);
 }
@@ -232,9 +226,9 @@ double bridging_stress_eq15(double delta, double l_b, double rho_b, const Bridgi
 double bridged_density(double sigma, double delta, double l_b, const BridgingFiber& f,
                        BridgingMechanism m, bool small_k) {
   if (!(std::isfinite(sigma) && sigma >= 0))
-    throw InputError("bridged density: stress " + fmt(sigma) + " Pa, expected >= 0");
+    throw InputError("bridged density: stress " + num(sigma) + " Pa, expected >= 0");
   if (!(std::isfinite(delta) && delta > 0))
-    throw InputError("bridged density: opening " + fmt(delta) +
+    throw InputError("bridged density: opening " + num(delta) +
                      " m, expected > 0 (no opening carries no stress)");
   // Every form is linear in rho_b: invert through the stress of unit density.
   double per_density = 0;

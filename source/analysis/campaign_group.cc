@@ -8,6 +8,7 @@
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
+#include "fiberbridge/core/median.h"
 #include "fiberbridge/core/units.h"
 
 #include <boost/math/distributions/normal.hpp>
@@ -101,10 +102,6 @@ Interval make_interval(const CampaignOptions& o, std::size_t n, double v,
   return {std::max(0.0, v - k * sd), v + k * sd};
 }
 
-double median(std::vector<double> v) {
-  return sample_quantile(std::move(v), 0.5);
-}
-
 /// The cell of a specimen's R(delta) curve farthest from the curve's median, in multiples of
 /// the median (`ratio`), and where it is: "file:line: R = ... J/m^2 at delta = ... mm".
 struct FarCell {
@@ -116,12 +113,10 @@ FarCell farthest_cell(const CampaignSpecimen& s) {
   const auto& R = s.curve.R;
   if (R.size() < 3)
     return {};
-  std::vector<double> sorted(R);
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double median = sorted[sorted.size() / 2];
+  const double mid = median_upper(R);
   std::size_t worst = 0;
   for (std::size_t i = 1; i < R.size(); ++i)
-    if (std::abs(R[i] - median) > std::abs(R[worst] - median))
+    if (std::abs(R[i] - mid) > std::abs(R[worst] - mid))
       worst = i;
   std::string where = s.row.file;
   // The file's own line, when the file is the R(delta) table that row came from.
@@ -139,10 +134,10 @@ FarCell farthest_cell(const CampaignSpecimen& s) {
     // The message still names the file and the value.
   }
   FarCell c;
-  c.ratio = median > 0 ? std::abs(R[worst] - median) / median : 0;
+  c.ratio = mid > 0 ? std::abs(R[worst] - mid) / mid : 0;
   c.text = where + ": R = " + fmt(R[worst]) +
            " J/m^2 at delta = " + fmt(s.curve.delta[worst] / mm) + " mm (the curve's median is " +
-           fmt(median) + " J/m^2)";
+           fmt(mid) + " J/m^2)";
   return c;
 }
 
@@ -324,6 +319,10 @@ const char* quantity_key(GroupQuantity q) {
                                "J2_J_m2",    "G_ss_J_m2",         "J_tip_J_m2",
                                "l_b_mm",     "rho_b_low_per_mm2", "rho_b_high_per_mm2"};
   return keys[static_cast<std::size_t>(q)];
+}
+
+std::string group_file_stem(const std::string& material, double cycles) {
+  return file_name_part(material) + "_c" + fmt(cycles);
 }
 
 unsigned group_seed(unsigned campaign_seed, const std::string& material, double cycles) {

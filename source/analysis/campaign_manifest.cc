@@ -24,16 +24,12 @@ constexpr double max_cycles = 1e6;
 /// File names hold "campaign_degradation_" + this + "_c<cycles>.csv": 255 bytes is the limit.
 constexpr std::size_t max_material_file_part = 120;
 
-std::string trim(const std::string& s) {
-  return trim_blanks(s);
-}
-
 /// An optional positive cell: NaN when empty.
 double optional_positive(const CsvTable& t, const std::string& column, std::size_t row, double unit,
                          const std::string& where) {
   if (!t.has_column(column))
     return NAN;
-  const std::string v = trim(t.text(column)[row]);
+  const std::string v = trim_blanks(t.text(column)[row]);
   if (v.empty())
     return NAN;
   char* end = nullptr;
@@ -90,12 +86,12 @@ CampaignManifest read_campaign_manifest(const std::string& path) {
     r.manifest = path;
     r.line = t.line_of_row(i);
     const std::string where = r.where();
-    r.file_as_written = trim(t.text("file")[i]);
-    r.material = trim(t.text("material")[i]);
-    r.specimen = trim(t.text("specimen")[i]);
+    r.file_as_written = trim_blanks(t.text("file")[i]);
+    r.material = trim_blanks(t.text("material")[i]);
+    r.specimen = trim_blanks(t.text("specimen")[i]);
     if (r.file_as_written.empty() || r.material.empty() || r.specimen.empty())
       throw InputError(where + ": file, material and specimen must not be empty");
-    const std::string c = trim(t.text("cycles")[i]);
+    const std::string c = trim_blanks(t.text("cycles")[i]);
     char* end = nullptr;
     r.cycles = std::strtod(c.c_str(), &end);
     // Moisture cycles are counted in tens; far beyond, the degradation fit's sums overflow
@@ -136,10 +132,7 @@ CampaignManifest read_campaign_manifest(const std::string& path) {
 }
 
 std::string campaign_file_part(const std::string& material) {
-  std::string o;
-  for (char c : material)
-    o += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
-  return o;
+  return file_name_part(material);
 }
 
 const char* to_string(SpecimenInput k) {

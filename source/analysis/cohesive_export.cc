@@ -2,10 +2,10 @@
 #include "fiberbridge/analysis/cohesive_export.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace fiberbridge::analysis {
 
@@ -16,12 +16,6 @@ constexpr double to_mm = 1e3;     // m -> mm
 constexpr double to_MPa = 1e-6;   // Pa -> MPa
 constexpr double to_N_mm = 1e-3;  // J/m^2 -> N/mm
 constexpr double to_N_mm3 = 1e-9; // Pa/m -> N/mm^3
-
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.7g", v);
-  return buf;
-}
 
 void check_law(const PolylineLaw& l) {
   const std::size_t n = l.delta.size();
@@ -78,7 +72,7 @@ std::string lsdyna_mat_cohesive_general(const PolylineLaw& law, int material_id,
   s += "$ Units: mm, N, MPa, s, tonne (traction MPa, GIC N/mm = kJ/m^2).\n";
   s += "$ Mode I bridging law measured by the DCB (seed Eq. 6, trilinear fit): the load curve is\n";
   s += "$ the law normalised by T (ordinate) and delta_c (abscissa); LS-DYNA's ultimate\n";
-  s += "$ separation GIC/(T*area of the curve) = delta_c = " + num(law.delta.back() * to_mm) +
+  s += "$ separation GIC/(T*area of the curve) = delta_c = " + fmt(law.delta.back() * to_mm, 7) +
        " mm.\n";
   s += "$ Mode II was not measured: S and GIIC repeat T and GIC (replace them if you know "
        "better).\n";
@@ -86,15 +80,15 @@ std::string lsdyna_mat_cohesive_general(const PolylineLaw& law, int material_id,
   s += "*MAT_COHESIVE_GENERAL_TITLE\n" + title + "\n";
   s += "$      MID,       RO,    ROFLG,  INTFAIL,      TES,     TSLC,      GIC,     GIIC\n";
   s += std::to_string(material_id) + ",1.0e-9,0,1,0," + std::to_string(curve_id) + "," +
-       num(c.GIC * to_N_mm) + "," + num(c.GIC * to_N_mm) + "\n";
+       fmt(c.GIC * to_N_mm, 7) + "," + fmt(c.GIC * to_N_mm, 7) + "\n";
   s += "$      XMU,        T,        S,    STFSF\n";
-  s += "1.0," + num(c.T * to_MPa) + "," + num(c.T * to_MPa) + ",0.0\n";
+  s += "1.0," + fmt(c.T * to_MPa, 7) + "," + fmt(c.T * to_MPa, 7) + ",0.0\n";
   s += "*DEFINE_CURVE_TITLE\n" + title + " normalised traction-separation\n";
   s += "$     LCID,     SIDR,      SFA,      SFO\n";
   s += std::to_string(curve_id) + ",0,1.0,1.0\n";
   s += "$   lambda = delta/delta_c, traction/T\n";
   for (std::size_t i = 0; i < c.lambda.size(); ++i)
-    s += num(c.lambda[i]) + "," + num(c.t_over_T[i]) + "\n";
+    s += fmt(c.lambda[i], 7) + "," + fmt(c.t_over_T[i], 7) + "\n";
   return s;
 }
 
@@ -145,17 +139,17 @@ std::string abaqus_cohesive_material(const PolylineLaw& law, const std::string& 
   s += "** *COHESIVE SECTION, RESPONSE=TRACTION SEPARATION and constitutive thickness 1.\n";
   s += "** Elastic up to the first breakpoint (K = sigma1/delta1), damage from there:\n";
   s += "** D(u) = 1 - sigma(delta)/(K delta), u = delta - delta1, linear in u between rows.\n";
-  s += "** Law area " + num(law.area() * to_N_mm) + " N/mm, peak " + num(law.peak() * to_MPa) +
-       " MPa, delta_c " + num(law.delta.back() * to_mm) + " mm. Mode II not measured: the shear\n";
+  s += "** Law area " + fmt(law.area() * to_N_mm, 7) + " N/mm, peak " + fmt(law.peak() * to_MPa, 7) +
+       " MPa, delta_c " + fmt(law.delta.back() * to_mm, 7) + " mm. Mode II not measured: the shear\n";
   s += "** entries repeat the normal ones.\n";
   s += "*MATERIAL, NAME=" + name + "\n";
   s += "*ELASTIC, TYPE=TRACTION\n";
-  s += num(t.K * to_N_mm3) + ", " + num(t.K * to_N_mm3) + ", " + num(t.K * to_N_mm3) + "\n";
+  s += fmt(t.K * to_N_mm3, 7) + ", " + fmt(t.K * to_N_mm3, 7) + ", " + fmt(t.K * to_N_mm3, 7) + "\n";
   s += "*DAMAGE INITIATION, CRITERION=MAXS\n";
-  s += num(t.t0 * to_MPa) + ", " + num(t.t0 * to_MPa) + ", " + num(t.t0 * to_MPa) + "\n";
+  s += fmt(t.t0 * to_MPa, 7) + ", " + fmt(t.t0 * to_MPa, 7) + ", " + fmt(t.t0 * to_MPa, 7) + "\n";
   s += "*DAMAGE EVOLUTION, TYPE=DISPLACEMENT, SOFTENING=TABULAR\n";
   for (std::size_t i = 0; i < t.D.size(); ++i)
-    s += num(t.D[i]) + ", " + num(t.u[i] * to_mm) + "\n";
+    s += fmt(t.D[i], 7) + ", " + fmt(t.u[i] * to_mm, 7) + "\n";
   return s;
 }
 

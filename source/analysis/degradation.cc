@@ -4,17 +4,16 @@
 
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <map>
-#include <sstream>
 
 namespace fiberbridge::analysis {
 
@@ -24,13 +23,6 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 std::string where(const std::string& source, std::size_t line) {
   return source + ":" + std::to_string(line) + ": ";
-}
-
-/// Short decimal form for messages ("26.2", "347", "0.0275").
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.5g", v);
-  return buf;
 }
 
 /// A whole-string finite number, or false.
@@ -107,7 +99,7 @@ LinearRegression linear_regression(const std::vector<double>& x, const std::vect
     syy += (y[i] - my) * (y[i] - my);
   }
   if (!(sxx > 0))
-    throw InputError("linear_regression: all x values are equal (" + fmt(mx) +
+    throw InputError("linear_regression: all x values are equal (" + fmt(mx, 5) +
                      "); a slope needs at least two distinct x");
   LinearRegression fit;
   fit.n = static_cast<int>(n);
@@ -169,7 +161,7 @@ PropertyTable parse_property_table(const std::string& text, const std::string& s
       for (std::size_t i = 0; i < table.cycles.size(); ++i)
         if (table.cycles[i] == cycle)
           throw InputError(source_name + ": header: columns '" + cycle_columns[i] + "' and '" +
-                           name + "' name the same cycle count " + fmt(cycle));
+                           name + "' name the same cycle count " + fmt(cycle, 5));
       table.cycles.push_back(cycle);
       cycle_columns.push_back(name);
     } else {
@@ -344,7 +336,7 @@ std::vector<MaterialRank> rank_materials(const std::vector<DegradationRow>& rows
     if (!std::isfinite(r.normalized_rate))
       throw InputError(where(r.source, r.line) + r.material + " " + r.property +
                        " degrades significantly but its fitted value at 0 cycles is " +
-                       fmt(r.fit.intercept) +
+                       fmt(r.fit.intercept, 5) +
                        "; a normalized rate (slope/intercept) needs a positive intercept");
     MaterialRank& m = ranks[it->second];
     m.degradation_score += r.normalized_rate;
@@ -376,8 +368,8 @@ std::vector<ConsistencyIssue> check_row_consistency(const PropertyTable& table, 
                                                     double (*dc_mm_of)(const std::string&),
                                                     const ConsistencyTolerance& tolerance) {
   if (!(d1_mm > 0 && d2_mm > d1_mm))
-    throw InputError("check_row_consistency: openings d1 = " + fmt(d1_mm) +
-                     " mm, d2 = " + fmt(d2_mm) + " mm; expected 0 < d1 < d2");
+    throw InputError("check_row_consistency: openings d1 = " + fmt(d1_mm, 5) +
+                     " mm, d2 = " + fmt(d2_mm, 5) + " mm; expected 0 < d1 < d2");
   if (!(tolerance.j1_relative >= 0 && tolerance.j2_relative >= 0))
     throw InputError("check_row_consistency: relative tolerances must be >= 0");
   std::vector<ConsistencyIssue> issues;
@@ -394,7 +386,7 @@ std::vector<ConsistencyIssue> check_row_consistency(const PropertyTable& table, 
       continue;
     const double dc = dc_mm_of(m);
     if (!(dc > 0))
-      throw InputError("check_row_consistency: delta_c of " + m + " is " + fmt(dc) +
+      throw InputError("check_row_consistency: delta_c of " + m + " is " + fmt(dc, 5) +
                        " mm; expected > 0");
     for (std::size_t i = 0; i < table.cycles.size(); ++i) {
       const double a = s1->values[i], b = s2->values[i], p1 = j1->values[i], p2 = j2->values[i];
@@ -424,13 +416,13 @@ std::vector<ConsistencyIssue> check_row_consistency(const PropertyTable& table, 
         continue;
       std::string msg;
       if (!issue.j1_consistent)
-        msg += "J1 printed " + j1->cells[i] + ", expected " + fmt(e1) + " = (sigma1 " +
-               s1->cells[i] + " * " + fmt(d2_mm) + " - sigma2 " + s2->cells[i] + " * " +
-               fmt(d1_mm) + ")/2 (tolerance " + fmt(tol1) + ")";
+        msg += "J1 printed " + j1->cells[i] + ", expected " + fmt(e1, 5) + " = (sigma1 " +
+               s1->cells[i] + " * " + fmt(d2_mm, 5) + " - sigma2 " + s2->cells[i] + " * " +
+               fmt(d1_mm, 5) + ")/2 (tolerance " + fmt(tol1, 5) + ")";
       if (!issue.j2_consistent) {
         msg += std::string(msg.empty() ? "" : "; ") + "J2 printed " + j2->cells[i] + ", expected " +
-               fmt(e2) + " = sigma2 " + s2->cells[i] + " * " + fmt(dc) + "/2 (tolerance " +
-               fmt(tol2) + "); the printed J2 implies sigma2 = " + fmt(2 * p2 / dc) + " kPa";
+               fmt(e2, 5) + " = sigma2 " + s2->cells[i] + " * " + fmt(dc, 5) + "/2 (tolerance " +
+               fmt(tol2, 5) + "); the printed J2 implies sigma2 = " + fmt(2 * p2 / dc, 5) + " kPa";
       }
       const bool swapped = !issue.j1_consistent && !issue.j2_consistent &&
                            std::abs(p1 - e2) <= tol2 + roundoff &&

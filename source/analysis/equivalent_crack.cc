@@ -2,18 +2,13 @@
 #include "fiberbridge/analysis/equivalent_crack.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 
 #include <algorithm>
-#include <sstream>
 
 namespace fiberbridge::analysis {
 
 namespace {
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 bool has_shear(double g13) {
   return std::isfinite(g13) && g13 > 0;
 }

@@ -1,6 +1,7 @@
 #include "fiberbridge/analysis/line_fit.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace fiberbridge::analysis {
@@ -67,6 +68,12 @@ double interpolate_linear(const std::vector<double>& x, const std::vector<double
       static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), at) - x.begin()) - 1;
   const double w = (at - x[j]) / (x[j + 1] - x[j]);
   return y[j] + w * (y[j + 1] - y[j]);
+}
+
+double interpolate_within(const std::vector<double>& x, const std::vector<double>& y, double at) {
+  if (x.empty() || at < x.front() || at > x.back())
+    return NAN;
+  return interpolate_linear(x, y, at);
 }
 
 } // namespace fiberbridge::analysis

@@ -1,5 +1,6 @@
 #include "fiberbridge/analysis/model_comparison.h"
 
+#include "fiberbridge/analysis/line_fit.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 
@@ -10,18 +11,6 @@
 namespace fiberbridge::analysis {
 
 namespace {
-
-/// Piecewise-linear interpolation of y(x) on increasing x; NaN outside.
-double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
-  if (x.empty() || at < x.front() || at > x.back())
-    return result::not_available;
-  const auto it = std::lower_bound(x.begin(), x.end(), at);
-  const std::size_t i = static_cast<std::size_t>(it - x.begin());
-  if (i == 0)
-    return y[0];
-  const double t = (at - x[i - 1]) / (x[i] - x[i - 1]);
-  return y[i - 1] + t * (y[i] - y[i - 1]);
-}
 
 /// Tip position where the notch root first moves (end of the developing part); +inf if never.
 double end_of_development(const result::SimulationResult& r) {
@@ -80,7 +69,7 @@ std::vector<PairwiseDifference> compare_models(const result::SimulationResult& a
       const double va = field(p, y_field);
       if (!std::isfinite(x_of(p)) || !std::isfinite(va) || p.a > a_end)
         continue;
-      const double vb = interpolate(xb, yb, x_of(p));
+      const double vb = interpolate_within(xb, yb, x_of(p));
       if (!std::isfinite(vb))
         continue;
       num += (vb - va) * (vb - va);

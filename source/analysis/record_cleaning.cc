@@ -4,6 +4,8 @@
 #include "record_cleaning.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
+#include "fiberbridge/core/median.h"
 #include "fiberbridge/core/units.h"
 
 #include <algorithm>
@@ -34,12 +36,6 @@ constexpr std::size_t max_dropout_rows = 10;
 /// pins and hinges, which a shift would turn into a false compliance; the shared records show
 /// 0.04-0.07 mm at openings of 2 mm there).
 constexpr double linear_low = 0.1, linear_high = 0.5, offset_fraction = 0.05;
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 bool same(double a, double b) {
   return a == b || (std::isnan(a) && std::isnan(b));
@@ -346,16 +342,11 @@ private:
       step[i] = std::abs(v[i + 1] - v[i]);
     for (std::size_t i = 1; i + 1 < n; ++i)
       second[i - 1] = std::abs(v[i + 1] - 2 * v[i] + v[i - 1]);
-    const auto median = [](std::vector<double>& x) {
-      auto mid = x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2);
-      std::nth_element(x.begin(), mid, x.end());
-      return *mid;
-    };
     double largest = 0;
     for (double x : v)
       largest = std::max(largest, std::abs(x));
     const double threshold =
-        std::max({20 * median(second), 5 * median(step), spike_fraction * largest});
+        std::max({20 * median_upper(second), 5 * median_upper(step), spike_fraction * largest});
     std::size_t count = 0, first = 0;
     double worst = 0;
     for (std::size_t i = 1; i + 1 < n; ++i) {

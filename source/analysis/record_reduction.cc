@@ -5,6 +5,8 @@
 #include "fiberbridge/analysis/energy_rate.h"
 #include "fiberbridge/analysis/line_fit.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
+#include "fiberbridge/core/median.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/specimen/large_displacement.h"
 
@@ -31,18 +33,6 @@ constexpr double arm_thicknesses_per_window = 4;
 /// degrees of freedom for the residuals that estimate the noise).
 constexpr double readings_per_narrowest_window = 5;
 constexpr std::size_t min_readings = 5;
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-double median(std::vector<double> v) {
-  if (v.empty())
-    return NAN;
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
 
 /// Initiation (first value) and plateau (mean and std over da >= (1 - fraction) da_max).
 MethodSummary summarize(const std::vector<double>& da, const std::vector<double>& R,
@@ -96,7 +86,7 @@ double median_step(const std::vector<double>& a) {
   std::vector<double> d;
   for (std::size_t j = 1; j < a.size(); ++j)
     d.push_back(a[j] - a[j - 1]);
-  return d.empty() ? 0.0 : median(d);
+  return d.empty() ? 0.0 : median_upper(d);
 }
 
 /// Automatic window of the energy slopes for reading spacing `spacing`: the widest the
@@ -117,7 +107,7 @@ EnergySlopes slopes_of(const std::vector<double>& a, const std::vector<double>& 
   const double w_max = auto_window(spacing, h);
   EnergySlopes e =
       energy_slopes_adaptive(a, D, std::min(w_max, readings_per_narrowest_window * spacing), w_max);
-  reported = median(e.window);
+  reported = median_upper(e.window);
   return e;
 }
 
@@ -159,7 +149,7 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
   std::vector<double> spacing;
   for (std::size_t j = 1; j < ar.size(); ++j)
     spacing.push_back(ar[j] - ar[j - 1]);
-  const double reading_spacing = median(spacing);
+  const double reading_spacing = median_upper(spacing);
   if (!(o.smoothing_window > 0) && !std::isnan(o.smoothing_window))
     throw InputError(src + ": the smoothing window must be > 0 mm, got " +
                      num(o.smoothing_window / units::mm));
@@ -198,7 +188,7 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
   for (std::size_t j = 1; j < readings.size(); ++j)
     gaps.push_back(rec.time.empty() ? double(readings[j] - readings[j - 1])
                                     : rec.time[readings[j]] - rec.time[readings[j - 1]]);
-  const double time_window = monotone_reading_intervals * median(gaps);
+  const double time_window = monotone_reading_intervals * median_upper(gaps);
   const auto smooth = monotone_crack(rec, readings, time_window);
   std::vector<double> am;
   for (std::size_t k : readings)

@@ -2,6 +2,7 @@
 // records in <output>/resume next to the other units' (resume_store.h).
 #include "fiberbridge/app/campaign_resume.h"
 
+#include "fiberbridge/analysis/campaign.h"
 #include "fiberbridge/core/binary_archive.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
@@ -58,16 +59,9 @@ std::string content_hash(const std::string& path) {
          hex(h);
 }
 
-std::string stem(const std::string& material, double cycles) {
-  std::string o;
-  for (char c : material)
-    o += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
-  return o + "_c" + fmt(cycles);
-}
-
 std::string record_path(const std::string& output_dir, const std::string& kind,
                         const std::string& material, double cycles) {
-  return resume_directory(output_dir) + "/campaign_" + kind + "_" + stem(material, cycles) + ".bin";
+  return resume_directory(output_dir) + "/campaign_" + kind + "_" + analysis::group_file_stem(material, cycles) + ".bin";
 }
 
 /// Reads a record: its inputs compared with `inputs` (the first difference named, as

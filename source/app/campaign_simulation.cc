@@ -1,5 +1,6 @@
 // The campaign's laws back in the specimen (campaign_simulation.h; the paper's Fig. 10).
 #include "fiberbridge/app/campaign_simulation.h"
+#include "fiberbridge/analysis/campaign.h"
 #include "fiberbridge/analysis/line_fit.h"
 
 #include "fiberbridge/app/campaign_resume.h"
@@ -27,20 +28,6 @@ namespace fiberbridge::app {
 using units::mm;
 
 namespace {
-
-std::string stem(const std::string& material, double cycles) {
-  std::string o;
-  for (char c : material)
-    o += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
-  return o + "_c" + fmt(cycles);
-}
-
-double interpolate(const std::vector<double>& x, const std::vector<double>& y, double t) {
-  // Outside the polyline: no value; inside: the one linear interpolation (line_fit.h).
-  if (x.empty() || t < x.front() || t > x.back())
-    return NAN;
-  return analysis::interpolate_linear(x, y, t);
-}
 
 result::SimulationResult run_model(SceneContext& ctx, const std::string& model,
                                    const law::TractionLaw& law, double j_tip) {
@@ -98,7 +85,7 @@ GroupSimulation simulate_group(const SceneContext& ctx, const analysis::Campaign
     double ss = 0;
     int n = 0, inside = 0;
     for (std::size_t i = 0; i < c.delta.size(); ++i) {
-      const double sim = interpolate(s.delta_root, s.R, c.delta[i]);
+      const double sim = analysis::interpolate_within(s.delta_root, s.R, c.delta[i]);
       if (!std::isfinite(sim))
         continue;
       ss += (sim - c.R[i]) * (sim - c.R[i]);
@@ -298,7 +285,7 @@ std::vector<std::string> write_campaign_simulation_files(const analysis::Campaig
     if (!g || !s.ran)
       continue;
     const auto& c = g->estimate.curve;
-    CsvWriter w(out_dir + "/campaign_fig10_" + stem(s.material, s.cycles) + ".csv",
+    CsvWriter w(out_dir + "/campaign_fig10_" + analysis::group_file_stem(s.material, s.cycles) + ".csv",
                 {"delta_mm", "R_measured_J_m2", "R_std_J_m2", "R_simulated_J_m2"},
                 {s.material + " after " + fmt(s.cycles) +
                      " cycles: the group's averaged R(delta) "
@@ -310,7 +297,7 @@ std::vector<std::string> write_campaign_simulation_files(const analysis::Campaig
                      fmt(s.specimen.length / mm) + " mm" +
                      (s.geometry_note.empty() ? "" : " (" + s.geometry_note + ")")});
     for (std::size_t i = 0; i < c.delta.size(); ++i)
-      w.row({c.delta[i] / mm, c.R[i], c.R_std[i], interpolate(s.delta_root, s.R, c.delta[i])});
+      w.row({c.delta[i] / mm, c.R[i], c.R_std[i], analysis::interpolate_within(s.delta_root, s.R, c.delta[i])});
     w.close();
   }
   // One PNG per material: measured (band of 2 std) and simulated for every cycle count.
@@ -319,7 +306,7 @@ std::vector<std::string> write_campaign_simulation_files(const analysis::Campaig
     if (s.ran && std::find(materials.begin(), materials.end(), s.material) == materials.end())
       materials.push_back(s.material);
   for (const auto& m : materials) {
-    const std::string s0 = stem(m, 0);
+    const std::string s0 = analysis::group_file_stem(m, 0);
     const std::string png = "campaign_fig10_" + s0.substr(0, s0.size() - 3) + ".png";
     std::string p = gnuplot_png_preamble(png, 1000, 620);
     p += "set title '" + m + ": measured R(delta) (+-2 std over specimens) and the " +
@@ -331,7 +318,7 @@ std::vector<std::string> write_campaign_simulation_files(const analysis::Campaig
     for (const auto& s : sims) {
       if (s.material != m || !s.ran)
         continue;
-      const std::string csv = "campaign_fig10_" + stem(s.material, s.cycles) + ".csv";
+      const std::string csv = "campaign_fig10_" + analysis::group_file_stem(s.material, s.cycles) + ".csv";
       const std::string lc = " lc " + std::to_string(k + 1);
       p += std::string(k ? ", " : "") + "'" + csv + "' using 1:($2-2*$3):($2+2*$3) with " +
            "filledcurves" + lc + " notitle, '" + csv + "' using 1:2 with lines lw 1" + lc +

@@ -62,16 +62,8 @@ std::string html_escape(const std::string& s) {
   return o;
 }
 
-/// A material name as a file-name part.
-std::string file_part(const std::string& s) {
-  std::string o;
-  for (char c : s)
-    o += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
-  return o;
-}
-
 std::string group_stem(const CampaignGroup& g) {
-  return file_part(g.material) + "_c" + fmt(g.cycles);
+  return analysis::group_file_stem(g.material, g.cycles);
 }
 
 double q(const CampaignGroup& g, GroupQuantity k) {
@@ -329,13 +321,6 @@ void write_statistics_tables(const CampaignResult& r, const std::string& dir) {
   write_file_atomically(dir + "/campaign_ranking_confidence.csv", text);
 }
 
-double interpolate(const std::vector<double>& x, const std::vector<double>& y, double t) {
-  // Outside the polyline: no value; inside: the one linear interpolation (line_fit.h).
-  if (x.empty() || t < x.front() || t > x.back())
-    return NAN;
-  return analysis::interpolate_linear(x, y, t);
-}
-
 /// Per group with a law: its law CSV (Eq. 6, dR/ddelta, trilinear, band) and the FE cards.
 std::vector<std::string> write_group_laws(const CampaignResult& r, bool fe_export,
                                           const std::string& dir) {
@@ -361,8 +346,8 @@ std::vector<std::string> write_group_laws(const CampaignResult& r, bool fe_expor
                  fmt(100 * r.options.confidence) + " %; empty without bootstrap)"});
     for (std::size_t i = 0; i < grid.size(); ++i) {
       const double d = grid[i];
-      w.row({d / mm, interpolate(e.laws.delta, e.laws.sigma_eq6, d) / kPa,
-             interpolate(e.laws.delta, e.laws.sigma_dRdd, d) / kPa, tri.envelope(d) / kPa,
+      w.row({d / mm, analysis::interpolate_within(e.laws.delta, e.laws.sigma_eq6, d) / kPa,
+             analysis::interpolate_within(e.laws.delta, e.laws.sigma_dRdd, d) / kPa, tri.envelope(d) / kPa,
              g.law_lo.empty() ? NAN : g.law_lo[i] / kPa,
              g.law_hi.empty() ? NAN : g.law_hi[i] / kPa});
     }
@@ -381,7 +366,7 @@ std::vector<std::string> write_group_laws(const CampaignResult& r, bool fe_expor
       files.push_back(stem + "_lsdyna_mat186.k");
       write_file_atomically(
           dir + "/" + stem + "_abaqus.inp",
-          analysis::abaqus_cohesive_material(poly, file_part(g.material) + "_C" + fmt(g.cycles)));
+          analysis::abaqus_cohesive_material(poly, file_name_part(g.material) + "_C" + fmt(g.cycles)));
       files.push_back(stem + "_abaqus.inp");
     } catch (const std::exception&) {
       // A fitted law the codes cannot take (a zero first stress): the CSV says the law; the
@@ -421,7 +406,7 @@ std::vector<std::string> write_plots(const CampaignResult& r, const std::string&
     for (const auto& g : r.groups)
       if (g.material == mat && g.estimate.ok && g.estimate.has_law)
         gs.push_back(&g);
-    law_plot("campaign_laws_" + file_part(mat) + ".png",
+    law_plot("campaign_laws_" + file_name_part(mat) + ".png",
              mat + ": laws by Eq. 6 after each cycle count, " + level + " bootstrap bands", gs,
              false);
   }
@@ -443,7 +428,7 @@ std::vector<std::string> write_plots(const CampaignResult& r, const std::string&
   // Degradation: per material the four law properties against cycles with their intervals and
   // the least-squares line, its slope interval and p in the key.
   for (const auto& mat : materials_of(r)) {
-    const std::string csv = "campaign_degradation_" + file_part(mat) + ".csv";
+    const std::string csv = "campaign_degradation_" + file_name_part(mat) + ".csv";
     std::vector<std::string> header{"cycles"};
     const std::vector<std::string> props{"sigma1", "sigma2", "J1", "J2"};
     const std::vector<GroupQuantity> qs{GroupQuantity::sigma1, GroupQuantity::sigma2,
@@ -471,7 +456,7 @@ std::vector<std::string> write_plots(const CampaignResult& r, const std::string&
     w.close();
     if (!any)
       continue;
-    const std::string png = "campaign_degradation_" + file_part(mat) + ".png";
+    const std::string png = "campaign_degradation_" + file_name_part(mat) + ".png";
     std::string s = gnuplot_png_preamble(png, 1100, 800);
     s += "set multiplot layout 2,2 title '" + mat + ": degradation with moisture cycles (" + level +
          " intervals)'\nset xlabel 'cycles'\nset key below font ',9'\nset offsets 2,2,0,0\n";

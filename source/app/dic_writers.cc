@@ -3,6 +3,7 @@
 
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/format.h"
+#include "fiberbridge/core/median.h"
 #include "fiberbridge/core/plot.h"
 
 #include <algorithm>
@@ -26,14 +27,6 @@ std::vector<std::size_t> spread_used(const dic::DicAnalysis& a, std::size_t k) {
   for (std::size_t j = 0; j < k; ++j)
     pick.push_back(used[j * (used.size() - 1) / (k - 1)]);
   return pick;
-}
-
-double median(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty())
-    return NAN;
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
 }
 
 } // namespace
@@ -166,9 +159,9 @@ Json dic_summary(const DicStepOptions& o, const DicOutcome& r,
       tip_sd.push_back(f.s_tip_sd);
       root_sd.push_back(f.extensometer.sd);
     }
-  j["strain_noise_median"] = json_number(median(noise));
-  j["tip_sd_median_mm"] = json_number(median(tip_sd) * to_mm);
-  j["delta_root_sd_median_mm"] = json_number(median(root_sd) * to_mm);
+  j["strain_noise_median"] = json_number(median_upper(noise));
+  j["tip_sd_median_mm"] = json_number(median_upper(tip_sd) * to_mm);
+  j["delta_root_sd_median_mm"] = json_number(median_upper(root_sd) * to_mm);
   if (!r.rows.empty()) {
     j["final_a_mm"] = r.rows.back().a * to_mm;
     j["final_delta_root_mm"] = r.rows.back().delta_root * to_mm;

@@ -5,6 +5,7 @@
 // over the MPI ranks (task_distributor.h); each group's numbers depend only on its specimens,
 // the options and its own seed, so 1 and N ranks give the same tables.
 #include "fiberbridge/analysis/campaign_run.h"
+#include "fiberbridge/analysis/campaign.h"
 #include "fiberbridge/app/analysis_steps.h"
 #include "fiberbridge/app/campaign_dic.h"
 #include "fiberbridge/app/campaign_resume.h"
@@ -194,13 +195,6 @@ struct CampaignInputs {
       std::make_shared<std::map<std::size_t, std::pair<std::string, std::string>>>();
 };
 
-std::string file_stem(const std::string& text) {
-  std::string o;
-  for (char c : text)
-    o += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
-  return o;
-}
-
 CampaignInputs campaign_inputs(SceneContext& ctx) {
   CampaignInputs in;
   in.section = ctx.parameters().section<CampaignSection>("Campaign");
@@ -233,8 +227,8 @@ CampaignInputs campaign_inputs(SceneContext& ctx) {
   in.raw.dic_set = [sets, texts = in.dic_records](const analysis::CampaignRow& row) {
     std::string text;
     auto record = read_campaign_dic_set(row, sets, text);
-    (*texts)[row.line] = {"campaign_dic_" + file_stem(row.material) + "_c" + fmt(row.cycles) + "_" +
-                              file_stem(row.specimen) + ".csv",
+    (*texts)[row.line] = {"campaign_dic_" + analysis::group_file_stem(row.material, row.cycles) + "_" +
+                              file_name_part(row.specimen) + ".csv",
                           text};
     return record;
   };

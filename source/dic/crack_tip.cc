@@ -2,6 +2,7 @@
 #include "fiberbridge/dic/crack_tip.h"
 
 #include "fiberbridge/core/format.h"
+#include "fiberbridge/core/median.h"
 
 #include <algorithm>
 #include <cmath>
@@ -67,15 +68,11 @@ double noise_ahead(const PlaneProfile& p, double from) {
   std::vector<double> d2;
   for (std::size_t i = 1; i + 1 < v.size(); ++i)
     d2.push_back(v[i - 1] - 2 * v[i] + v[i + 1]);
-  const auto median = [](std::vector<double> x) {
-    std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
-    return x[x.size() / 2];
-  };
-  const double m = median(d2);
+  const double m = median_upper(d2);
   for (auto& d : d2)
     d = std::abs(d - m);
   // Var(e[i-1] - 2 e[i] + e[i+1]) = 6 sigma^2 for white noise; 1.4826 MAD estimates a std.
-  return 1.4826 * median(d2) / std::sqrt(6.0);
+  return 1.4826 * median_upper(d2) / std::sqrt(6.0);
 }
 
 } // namespace

@@ -13,10 +13,6 @@ namespace fiberbridge::dic {
 
 namespace {
 
-std::string trim(const std::string& s) {
-  return trim_blanks(s);
-}
-
 std::vector<std::string> glob_paths(const std::string& pattern) {
   std::vector<std::string> out;
   glob_t g{};
@@ -109,7 +105,7 @@ std::vector<FrameFile> order_frames(const std::vector<std::string>& paths,
 }
 
 FrameTimeSource parse_frame_time_source(const std::string& text, const std::string& where) {
-  const std::string t = trim(text);
+  const std::string t = trim_blanks(text);
   if (t == "auto" || t.empty())
     return FrameTimeSource::automatic;
   if (t == "column")

@@ -10,10 +10,9 @@
 namespace fiberbridge::fem {
 
 const double kAutoLargestElement = 2e-3;
-// 0.5 mm on the seed specimen (300 mm). Cost: the 30 MPa / 0.02 mm law took 3.5 s at 0.5 mm and
-// 19.8 s at 0.25 mm on the idle machine (docs/verification.md, "Strong short laws"); the 20 MPa
-// / 0.05 mm law at 0.25 mm took 200 s on the shared machine (docs/verification.md, "The automatic
-// mesh"). A default run is not to take minutes: finer than this, the user says so.
+// 0.5 mm on the seed specimen (300 mm). What finer elements cost on the strong short laws:
+// docs/verification.md, "Strong short laws" and "The automatic mesh". A default run is not to
+// take minutes: finer than this, the user says so.
 const double kAutoMostElementsAlongLength = 600;
 // The zone rule asks for kMinZoneSpacings = 3 elements. The smallest ratio of a measured,
 // resolved zone to the estimate was 0.42 (10 MPa / 0.1 mm on the seed specimen: 2.78 mm at 0.5 mm

@@ -9,18 +9,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 
 namespace fiberbridge::fem {
 
 using namespace dealii;
-
-std::string fmt(double v, int precision) {
-  std::ostringstream s;
-  s << std::setprecision(precision) << v;
-  return s.str();
-}
 
 template <>
 SymmetricTensor<4, 2> orthotropic_stiffness<2>(const specimen::Material& m,

@@ -203,8 +203,8 @@ private:
     data.constant_modes = modes_.constant_modes;
     // Near null space: all rigid-body modes, translations AND rotations. With translations only
     // (what AdditionalData::constant_modes can express) the coarse levels cannot represent the
-    // bending of the slender arms and CG slows down with the mesh (measured: 0.39 s per solve
-    // at 14 640 DoFs, 5.2 s at 65 340). ML takes the modes as a pre-computed null space; the
+    // bending of the slender arms and CG slows down with the mesh (docs/cluster.md, "Cost of a
+    // 3D R curve at 10^7 DoFs on a cluster"). ML takes the modes as a pre-computed null space; the
     // coordinates are centred on the beam for conditioning.
     Teuchos::ParameterList list;
     std::unique_ptr<Epetra_MultiVector> translations;

@@ -2,6 +2,7 @@
 #include "specimen_mesh.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/fem/dcb_common.h"
 
@@ -38,12 +39,8 @@ std::vector<std::pair<std::string, double>> parse_pairs(const std::string& text)
   std::string item;
   while (std::getline(all, item, ',')) {
     const auto colon = item.find(':');
-    auto trim = [](std::string s) {
-      const auto b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t");
-      return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-    };
-    const std::string name = trim(item.substr(0, colon));
-    const std::string value = colon == std::string::npos ? "" : trim(item.substr(colon + 1));
+    const std::string name = trim_blanks(item.substr(0, colon));
+    const std::string value = colon == std::string::npos ? "" : trim_blanks(item.substr(colon + 1));
     const bool identifier = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
                             std::all_of(name.begin(), name.end(), [](char c) {
                               return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -51,7 +48,7 @@ std::vector<std::pair<std::string, double>> parse_pairs(const std::string& text)
     char* end = nullptr;
     const double v = value.empty() ? 0.0 : std::strtod(value.c_str(), &end);
     if (!identifier || value.empty() || *end != '\0' || !std::isfinite(v))
-      throw InputError("FEM/Mesh file parameters: '" + trim(item) +
+      throw InputError("FEM/Mesh file parameters: '" + trim_blanks(item) +
                        "' is not a pair 'name: number' (name a Gmsh identifier)");
     pairs.emplace_back(name, v);
   }

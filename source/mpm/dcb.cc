@@ -368,9 +368,8 @@ result::SimulationResult DcbModel::run() {
   finish(r);
   // The zone must span cells as it must span elements in the FEM (issue 13 item 6): one rule.
   // The MPM's zone reading (tip - root) is never under about two cells: the tip advances a whole
-  // cell and its cell is only partly split, so the root lags. Measured: a 10 MPa, 0.1 mm linear
-  // law (a zone of 3.2-3.4 mm in the resolved FEM) reads 12.5 and 17.5 mm at 5 mm cells, its
-  // G_ss 23 % low; without the offset the rule called that zone resolved.
+  // cell and its cell is only partly split, so the root lags (the measured case:
+  // docs/verification.md, "Strong short laws", the MPM on the issue's case).
   constexpr double root_reading_cells = 2;
   result::note_zone_resolution(r, cell_, "cells", "MPM/Cell size", root_reading_cells);
   // Every session's wall time: a resumed run reports what the whole run cost.

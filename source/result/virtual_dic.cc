@@ -6,12 +6,10 @@
 #include "fiberbridge/core/units.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <initializer_list>
 #include <random>
 
 namespace fiberbridge::result {
@@ -164,12 +162,6 @@ double frame_y(const VirtualDicSettings& s, const DicGrid& grid, double y) {
 }
 
 namespace {
-
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.9g", v);
-  return b;
-}
 
 void write_text(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
@@ -368,15 +360,15 @@ VirtualTestFiles VirtualDicTest::write(const std::string& directory,
   sc += std::string("  set Format                    = ") + dic_layout_name(s_.layout) + "\n";
   sc += std::string("  set Coordinates               = ") + (s_.pixels ? "px" : "mm") + "\n";
   if (s_.pixels)
-    sc += "  set Pixel size                = " + num(s_.pixel_size / mm) + "\n";
+    sc += "  set Pixel size                = " + fmt(s_.pixel_size / mm, 9) + "\n";
   sc += std::string("  set Y axis                    = ") + (s_.y_down ? "down" : "up") + "\n";
-  sc += "  set Crack plane y             = " + num(crack_y_frame) + "\n";
-  sc += "  set Notch root x              = " + num(a0_frame) + "\n";
+  sc += "  set Crack plane y             = " + fmt(crack_y_frame, 9) + "\n";
+  sc += "  set Notch root x              = " + fmt(a0_frame, 9) + "\n";
   sc += "  set Growth direction          = +x\n";
-  sc += "  set Frame rate                = " + num(s_.frame_rate) + "\n";
-  sc += "  set First frame time          = " + num(s_.first_frame_time) + "\n";
+  sc += "  set Frame rate                = " + fmt(s_.frame_rate, 9) + "\n";
+  sc += "  set First frame time          = " + fmt(s_.first_frame_time, 9) + "\n";
   sc += "  set Strain threshold          = 0.01\n";
-  sc += "  set Extensometer gauge length = " + num(gauge / mm) + "\n";
+  sc += "  set Extensometer gauge length = " + fmt(gauge / mm, 9) + "\n";
   sc += "end\n\nsubsection Test\n  set Files = machine.csv\nend\n";
   out.scene = directory + "/dic_scene.prm";
   write_text(out.scene, sc);

@@ -1,22 +1,13 @@
 #include "fiberbridge/specimen/specimen.h"
 
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 
 #include <cmath>
-#include <sstream>
 #include <utility>
 
 namespace fiberbridge::specimen {
-
-namespace {
-/// A value as the stream prints it (6 significant digits), as the record reader's messages do.
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-} // namespace
 
 Specimen Specimen::unknown() {
   Specimen s;

@@ -1,6 +1,7 @@
 // The durability campaign (issue 33): a synthetic campaign from known laws recovered within a
 // stated tolerance, the bootstrap intervals' coverage, the ranking, determinism, the paper's own
 // Table 1 as group values, bad manifests, and the laws as LS-DYNA / Abaqus take them.
+#include "fiberbridge/analysis/campaign.h"
 #include "fiberbridge/analysis/campaign_run.h"
 #include "fiberbridge/analysis/campaign_synthetic.h"
 #include "fiberbridge/analysis/cohesive_export.h"
@@ -597,4 +598,11 @@ TEST(CampaignGroup, OneBadCellNamesTheSpecimenFileAndLine) {
   EXPECT_NE(notes.find("without specimen 's3'"), std::string::npos) << notes;
   EXPECT_NE(notes.find("PVA_c0_s3.csv:" + std::to_string(spoiled_line)), std::string::npos)
       << notes;
+}
+
+// Every file of a group carries one stem (issue 40 item 6: it was spelled in four places).
+TEST(CampaignFiles, GroupFileStemIsTheMaterialAsAFileNamePartAndTheCycles) {
+  EXPECT_EQ(analysis::group_file_stem("PVA control", 0), "PVA_control_c0");
+  EXPECT_EQ(analysis::group_file_stem("PRF/wet", 12.5), "PRF_wet_c12.5");
+  EXPECT_EQ(analysis::group_file_stem("EPI", 100000), "EPI_c1e+05") << "cycles as fmt prints them";
 }

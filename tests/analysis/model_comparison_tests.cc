@@ -1,5 +1,6 @@
 // The metrics of `compare` (analysis/model_comparison.h) on hand-made R curves whose differences
 // are known exactly, and the closed loop on an R curve that is Eq. 2 of a known law.
+#include "fiberbridge/analysis/line_fit.h"
 #include "fiberbridge/analysis/model_comparison.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
@@ -202,4 +203,18 @@ TEST(ModelComparison, ClosedLoopNeedsABridgingLaw) {
   } catch (const ComputationError& e) {
     EXPECT_NE(std::string(e.what()).find("no bridging"), std::string::npos) << e.what();
   }
+}
+
+// The one "values only where the curve has them" interpolation (analysis/line_fit.h; issue 40
+// item 6): the comparison and the campaign's tables read through it.
+TEST(InterpolateWithin, LinearInsideExactAtNodesNaNOutside) {
+  const std::vector<double> x{0, 1, 3}, y{10, 20, 0};
+  EXPECT_EQ(analysis::interpolate_within(x, y, 0), 10);
+  EXPECT_EQ(analysis::interpolate_within(x, y, 0.5), 15);
+  EXPECT_EQ(analysis::interpolate_within(x, y, 1), 20) << "a node gives its own value";
+  EXPECT_EQ(analysis::interpolate_within(x, y, 2), 10);
+  EXPECT_EQ(analysis::interpolate_within(x, y, 3), 0);
+  EXPECT_TRUE(std::isnan(analysis::interpolate_within(x, y, -1e-12)));
+  EXPECT_TRUE(std::isnan(analysis::interpolate_within(x, y, 3.5)));
+  EXPECT_TRUE(std::isnan(analysis::interpolate_within({}, {}, 0)));
 }

@@ -220,6 +220,11 @@ struct CampaignGroup {
 /// or rank they run on.
 unsigned group_seed(unsigned campaign_seed, const std::string& material, double cycles);
 
+/// The group's (material, cycles) as the stem of its file names, e.g. "PVA_control_c0": the
+/// material as a file-name part (core/format.h), "_c", the cycles as fmt prints them. Every file
+/// of a group (its law, its Fig. 10 curves, its resume records, its DIC records) carries it.
+std::string group_file_stem(const std::string& material, double cycles);
+
 /// Groups by (material, cycles) in order of first appearance; checks one input kind per group
 /// (InputError naming both manifest lines otherwise).
 std::vector<CampaignGroup> make_campaign_groups(const std::vector<CampaignSpecimen>& specimens);

@@ -28,4 +28,8 @@ std::vector<double> resample_linear(const std::vector<double>& x, const std::vec
 /// One value of the same polyline (binary search).
 double interpolate_linear(const std::vector<double>& x, const std::vector<double>& y, double at);
 
+/// The same inside [x.front(), x.back()], NaN outside it (and for an empty x): a curve compared
+/// only where it has values (the campaign's Fig. 10 and law tables, the model comparison).
+double interpolate_within(const std::vector<double>& x, const std::vector<double>& y, double at);
+
 } // namespace fiberbridge::analysis

@@ -21,15 +21,17 @@ struct SimulationModel {
   void (*parse)(dealii::ParameterHandler&, SceneParameters&);
   void (*check)(SceneContext&);
   void (*run)(SceneContext&);
-  /// Relative cost on the seed specimen (the beam ~0.2 s, the 2D FEM a few s, the MPM minutes,
-  /// README.md): orders the runs (cheapest first in a scene) and the hand-out across ranks
-  /// (costliest first, simulation_tasks.h).
+  /// Relative cost on the seed specimen (the beam ~0.2 s, the 2D FEM 0.18 s of model time on
+  /// its defaults, the MPM minutes: README.md, "The models in one paragraph each";
+  /// docs/verification.md, "The FEM at its physical limit"): orders the runs
+  /// (cheapest first in a scene) and the hand-out across ranks (costliest first,
+  /// simulation_tasks.h).
   double cost;
   /// Runs on all ranks of simulation_communicator() when it is the only simulation of a scene
   /// (an MPI program: the FEM); the others are serial programs, one task each.
   bool uses_all_ranks;
   /// Whether this scene's run of the model must have every rank even beside other models (the
-  /// FEM in 3D or on the distributed engine by request); nullptr = never.
+  /// FEM in 3D, or with the deprecated FEM/Engine = distributed as set); nullptr = never.
   bool (*needs_all_ranks)(const SceneParameters&);
   const char* ladder_default; ///< Study/<section> ladder: its default and its documentation
   const char* ladder_doc;

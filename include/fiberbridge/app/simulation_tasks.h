@@ -3,10 +3,10 @@
 // (task_distributor.h). The rule (docs/cluster.md, "Many runs across ranks"):
 //   - on one rank nothing changes: the items run one after the other;
 //   - under mpirun with N > 1 ranks, every simulation item the scene runs becomes one task on
-//     MPI_COMM_SELF (the FEM then takes its one-rank, serial 2D engine), except a FEM that needs
-//     all ranks (FEM/Dimension = 3 or FEM/Engine = distributed), which stays collective;
-//   - a scene whose only such task would be the 2D FEM keeps the FEM on the distributed engine
-//     over all ranks (one big run, nothing else to overlap with).
+//     MPI_COMM_SELF (the FEM then runs on that one rank), except a FEM that needs all ranks
+//     (FEM/Dimension = 3 or the deprecated FEM/Engine = distributed), which stays collective;
+//   - a scene whose only such task would be the 2D FEM runs the FEM over all ranks (one big
+//     run, nothing else to overlap with).
 // Every rank ends with the same results and summary blocks as a serial run; rank 0 alone writes
 // the shared files, while each task writes its own model's files (rcurve_<model>.csv, fields).
 #include "fiberbridge/app/scene_context.h"

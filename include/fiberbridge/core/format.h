@@ -1,18 +1,37 @@
 #pragma once
-// Numbers in notes and progress lines: one formatter for every model (significant digits, the
-// stream's default notation); one trim of blanks around a cell or list entry, and one splitter of
-// the lists a scene or a command line writes ("beam, fem"; "a_mm: Crack, load_N: Force").
+// Numbers in notes, messages and progress lines: one formatter for every library (significant
+// digits, the stream's default notation); one trim of blanks around a cell or list entry, one
+// splitter of the lists a scene or a command line writes ("beam, fem"; "a_mm: Crack, load_N:
+// Force"), and one way to make a name part of a file name.
+#include <cctype>
 #include <sstream>
 #include <string>
 #include <vector>
 
 namespace fiberbridge {
 
+/// `v` with `precision` significant digits in the stream's default notation (printf's %.<p>g:
+/// "0.0275", "347", "1e+06", "nan", "inf").
 inline std::string fmt(double v, int precision = 4) {
   std::ostringstream s;
   s.precision(precision);
   s << v;
   return s.str();
+}
+
+/// `v` as a stream prints it unless told otherwise (6 significant digits): the form of the input
+/// readers' and checks' messages, so that a value quoted back reads as the user wrote it.
+inline std::string num(double v) {
+  return fmt(v, 6);
+}
+
+/// `text` as a part of a file name: letters, digits, '-' and '_' kept, every other byte '_'
+/// ("PVA control" -> "PVA_control").
+inline std::string file_name_part(const std::string& text) {
+  std::string o;
+  for (char c : text)
+    o += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
+  return o;
 }
 
 /// The blanks around a cell of a file read line by line: a file with CRLF line ends leaves the

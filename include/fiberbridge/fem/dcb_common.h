@@ -3,6 +3,7 @@
 // orthotropic stiffness, the insertable law (extrinsic for rigid laws), the mesh
 // lines, the steady-state rule's parameters, the J-integral weight, the stress output and number
 // formatting.
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/fem/dcb_simulation.h"
 #include "fiberbridge/fem/finite_strain.h"
 #include "fiberbridge/law/traction_law.h"
@@ -18,8 +19,6 @@
 #include <vector>
 
 namespace fiberbridge::fem {
-
-std::string fmt(double v, int precision = 4);
 
 using Clock = std::chrono::steady_clock;
 inline double seconds_since(Clock::time_point t0) {

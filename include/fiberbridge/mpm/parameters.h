@@ -32,12 +32,9 @@ struct MpmParameters {
   /// The growth criterion compares the tip J averaged over this many periods of the arm at the
   /// current crack length with J_tip; the window restarts at each advance, so the tip grows at
   /// most one step per window, and DcbModel shortens it to 0.7 of the time the loading needs to
-  /// drive the tip one step (beam theory) so that the tip keeps up. Measured on the
-  /// linear-softening verification run at 32 loading periods (quasi-static, window never
-  /// shortened): G_ss -2.1, -2.3, -2.4 % for 0.5, 0.25 and 0.35 with a cap of 0.7; at 8 loading
-  /// periods 0.25 gives -1.7 % (the window is cut at some advances and the result depends on it).
-  /// A window fixed at the a0 period (0.5 of it, the earlier rule) averaged less and less of the
-  /// ringing as the crack grew: -4.1 % at 32 loading periods, -6.0 % at 8.
+  /// drive the tip one step (beam theory) so that the tip keeps up. Why 0.25 and the cap of 0.7,
+  /// against a window fixed at the a0 period (the earlier rule, which averaged less and less of
+  /// the ringing as the crack grew): docs/verification.md, "MPM growth window".
   double j_window_periods = 0.25;
   /// The tip J domain: q = 1 within this many cells of the tip, falling to 0 two cells farther.
   double tip_j_cells = 2;
