@@ -139,12 +139,14 @@ std::string abaqus_cohesive_material(const PolylineLaw& law, const std::string& 
   s += "** *COHESIVE SECTION, RESPONSE=TRACTION SEPARATION and constitutive thickness 1.\n";
   s += "** Elastic up to the first breakpoint (K = sigma1/delta1), damage from there:\n";
   s += "** D(u) = 1 - sigma(delta)/(K delta), u = delta - delta1, linear in u between rows.\n";
-  s += "** Law area " + fmt(law.area() * to_N_mm, 7) + " N/mm, peak " + fmt(law.peak() * to_MPa, 7) +
-       " MPa, delta_c " + fmt(law.delta.back() * to_mm, 7) + " mm. Mode II not measured: the shear\n";
+  s += "** Law area " + fmt(law.area() * to_N_mm, 7) + " N/mm, peak " +
+       fmt(law.peak() * to_MPa, 7) + " MPa, delta_c " + fmt(law.delta.back() * to_mm, 7) +
+       " mm. Mode II not measured: the shear\n";
   s += "** entries repeat the normal ones.\n";
   s += "*MATERIAL, NAME=" + name + "\n";
   s += "*ELASTIC, TYPE=TRACTION\n";
-  s += fmt(t.K * to_N_mm3, 7) + ", " + fmt(t.K * to_N_mm3, 7) + ", " + fmt(t.K * to_N_mm3, 7) + "\n";
+  s +=
+      fmt(t.K * to_N_mm3, 7) + ", " + fmt(t.K * to_N_mm3, 7) + ", " + fmt(t.K * to_N_mm3, 7) + "\n";
   s += "*DAMAGE INITIATION, CRITERION=MAXS\n";
   s += fmt(t.t0 * to_MPa, 7) + ", " + fmt(t.t0 * to_MPa, 7) + ", " + fmt(t.t0 * to_MPa, 7) + "\n";
   s += "*DAMAGE EVOLUTION, TYPE=DISPLACEMENT, SOFTENING=TABULAR\n";

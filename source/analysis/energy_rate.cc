@@ -2,6 +2,7 @@
 #include "fiberbridge/analysis/energy_rate.h"
 
 #include "fiberbridge/analysis/line_fit.h"
+#include "fiberbridge/core/median.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,12 +85,6 @@ private:
   double x0_ = 0, y0_ = 0;
   std::vector<double> sx_, sy_, sxx_, sxy_, syy_;
 };
-
-/// Median of a copy of v (the upper one of an even count); v non-empty.
-double median_of(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
 
 } // namespace
 
@@ -183,7 +178,7 @@ double correlated_noise_factor(const WindowLines& lines, const std::vector<doubl
   }
   if (half_d2.empty() || !(nominal_se > 0))
     return 1;
-  const double scatter = std::sqrt(median_of(half_d2) / 0.455 * 8.0 / 7.0);
+  const double scatter = std::sqrt(median_upper(half_d2) / 0.455 * 8.0 / 7.0);
   return std::max(1.0, scatter / nominal_se);
 }
 
@@ -218,8 +213,8 @@ EnergySlopes energy_slopes_adaptive(const std::vector<double>& a, const std::vec
   // The same factor widens the band's standard-error term (slopes_with_windows): the windows
   // are now of the order of the errors' correlation length, where the w against 2 w scatter
   // sees only part of them.
-  const double noise_factor = correlated_noise_factor(lines, a, w_min, median_of(nominal_se));
-  const double sigma = median_of(sd) * noise_factor;
+  const double noise_factor = correlated_noise_factor(lines, a, w_min, median_upper(nominal_se));
+  const double sigma = median_upper(sd) * noise_factor;
   for (std::size_t j = 0; j < n; ++j) {
     // Intersection of confidence intervals over windows growing by sqrt(2): the widest window
     // whose slope +- ici_width standard errors (from sigma) still overlaps every narrower one.
@@ -247,8 +242,9 @@ EnergySlopes energy_slopes_adaptive(const std::vector<double>& a, const std::vec
   std::vector<double> smoothed(n);
   for (std::size_t j = 0; j < n; ++j) {
     const auto [b, e] = bounds(a[j], w_max);
-    smoothed[j] = median_of(std::vector<double>(window.begin() + static_cast<std::ptrdiff_t>(b),
-                                                window.begin() + static_cast<std::ptrdiff_t>(e)));
+    smoothed[j] =
+        median_upper(std::vector<double>(window.begin() + static_cast<std::ptrdiff_t>(b),
+                                         window.begin() + static_cast<std::ptrdiff_t>(e)));
   }
   return slopes_with_windows(lines, a, smoothed, noise_factor);
 }

@@ -61,7 +61,8 @@ std::string content_hash(const std::string& path) {
 
 std::string record_path(const std::string& output_dir, const std::string& kind,
                         const std::string& material, double cycles) {
-  return resume_directory(output_dir) + "/campaign_" + kind + "_" + analysis::group_file_stem(material, cycles) + ".bin";
+  return resume_directory(output_dir) + "/campaign_" + kind + "_" +
+         analysis::group_file_stem(material, cycles) + ".bin";
 }
 
 /// Reads a record: its inputs compared with `inputs` (the first difference named, as

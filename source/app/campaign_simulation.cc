@@ -285,19 +285,20 @@ std::vector<std::string> write_campaign_simulation_files(const analysis::Campaig
     if (!g || !s.ran)
       continue;
     const auto& c = g->estimate.curve;
-    CsvWriter w(out_dir + "/campaign_fig10_" + analysis::group_file_stem(s.material, s.cycles) + ".csv",
-                {"delta_mm", "R_measured_J_m2", "R_std_J_m2", "R_simulated_J_m2"},
-                {s.material + " after " + fmt(s.cycles) +
-                     " cycles: the group's averaged R(delta) "
-                     "and its scatter (standard deviation over the specimens) against the " +
-                     s.model + " simulation of the group's trilinear law (R_energy)",
-                 "simulated specimen: width " + fmt(s.specimen.width / mm) + " mm, arm thickness " +
-                     fmt(s.specimen.arm_thickness() / mm) + " mm, a0 " +
-                     fmt(s.specimen.initial_crack / mm) + " mm, length " +
-                     fmt(s.specimen.length / mm) + " mm" +
-                     (s.geometry_note.empty() ? "" : " (" + s.geometry_note + ")")});
+    CsvWriter w(
+        out_dir + "/campaign_fig10_" + analysis::group_file_stem(s.material, s.cycles) + ".csv",
+        {"delta_mm", "R_measured_J_m2", "R_std_J_m2", "R_simulated_J_m2"},
+        {s.material + " after " + fmt(s.cycles) +
+             " cycles: the group's averaged R(delta) "
+             "and its scatter (standard deviation over the specimens) against the " +
+             s.model + " simulation of the group's trilinear law (R_energy)",
+         "simulated specimen: width " + fmt(s.specimen.width / mm) + " mm, arm thickness " +
+             fmt(s.specimen.arm_thickness() / mm) + " mm, a0 " +
+             fmt(s.specimen.initial_crack / mm) + " mm, length " + fmt(s.specimen.length / mm) +
+             " mm" + (s.geometry_note.empty() ? "" : " (" + s.geometry_note + ")")});
     for (std::size_t i = 0; i < c.delta.size(); ++i)
-      w.row({c.delta[i] / mm, c.R[i], c.R_std[i], analysis::interpolate_within(s.delta_root, s.R, c.delta[i])});
+      w.row({c.delta[i] / mm, c.R[i], c.R_std[i],
+             analysis::interpolate_within(s.delta_root, s.R, c.delta[i])});
     w.close();
   }
   // One PNG per material: measured (band of 2 std) and simulated for every cycle count.
@@ -318,7 +319,8 @@ std::vector<std::string> write_campaign_simulation_files(const analysis::Campaig
     for (const auto& s : sims) {
       if (s.material != m || !s.ran)
         continue;
-      const std::string csv = "campaign_fig10_" + analysis::group_file_stem(s.material, s.cycles) + ".csv";
+      const std::string csv =
+          "campaign_fig10_" + analysis::group_file_stem(s.material, s.cycles) + ".csv";
       const std::string lc = " lc " + std::to_string(k + 1);
       p += std::string(k ? ", " : "") + "'" + csv + "' using 1:($2-2*$3):($2+2*$3) with " +
            "filledcurves" + lc + " notitle, '" + csv + "' using 1:2 with lines lw 1" + lc +

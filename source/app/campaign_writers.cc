@@ -347,8 +347,8 @@ std::vector<std::string> write_group_laws(const CampaignResult& r, bool fe_expor
     for (std::size_t i = 0; i < grid.size(); ++i) {
       const double d = grid[i];
       w.row({d / mm, analysis::interpolate_within(e.laws.delta, e.laws.sigma_eq6, d) / kPa,
-             analysis::interpolate_within(e.laws.delta, e.laws.sigma_dRdd, d) / kPa, tri.envelope(d) / kPa,
-             g.law_lo.empty() ? NAN : g.law_lo[i] / kPa,
+             analysis::interpolate_within(e.laws.delta, e.laws.sigma_dRdd, d) / kPa,
+             tri.envelope(d) / kPa, g.law_lo.empty() ? NAN : g.law_lo[i] / kPa,
              g.law_hi.empty() ? NAN : g.law_hi[i] / kPa});
     }
     w.close();
@@ -364,9 +364,9 @@ std::vector<std::string> write_group_laws(const CampaignResult& r, bool fe_expor
                                 analysis::lsdyna_mat_cohesive_general(poly, id, 1000 + id, title) +
                                 "*END\n");
       files.push_back(stem + "_lsdyna_mat186.k");
-      write_file_atomically(
-          dir + "/" + stem + "_abaqus.inp",
-          analysis::abaqus_cohesive_material(poly, file_name_part(g.material) + "_C" + fmt(g.cycles)));
+      write_file_atomically(dir + "/" + stem + "_abaqus.inp",
+                            analysis::abaqus_cohesive_material(poly, file_name_part(g.material) +
+                                                                         "_C" + fmt(g.cycles)));
       files.push_back(stem + "_abaqus.inp");
     } catch (const std::exception&) {
       // A fitted law the codes cannot take (a zero first stress): the CSV says the law; the

@@ -18,12 +18,6 @@ using namespace units;
 
 namespace {
 
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
 const double no_value = std::numeric_limits<double>::quiet_NaN();
 
 } // namespace

@@ -4,8 +4,8 @@
 // section and Specimen say how raw records are read and reduced. Groups run as independent tasks
 // over the MPI ranks (task_distributor.h); each group's numbers depend only on its specimens,
 // the options and its own seed, so 1 and N ranks give the same tables.
-#include "fiberbridge/analysis/campaign_run.h"
 #include "fiberbridge/analysis/campaign.h"
+#include "fiberbridge/analysis/campaign_run.h"
 #include "fiberbridge/app/analysis_steps.h"
 #include "fiberbridge/app/campaign_dic.h"
 #include "fiberbridge/app/campaign_resume.h"
@@ -227,8 +227,8 @@ CampaignInputs campaign_inputs(SceneContext& ctx) {
   in.raw.dic_set = [sets, texts = in.dic_records](const analysis::CampaignRow& row) {
     std::string text;
     auto record = read_campaign_dic_set(row, sets, text);
-    (*texts)[row.line] = {"campaign_dic_" + analysis::group_file_stem(row.material, row.cycles) + "_" +
-                              file_name_part(row.specimen) + ".csv",
+    (*texts)[row.line] = {"campaign_dic_" + analysis::group_file_stem(row.material, row.cycles) +
+                              "_" + file_name_part(row.specimen) + ".csv",
                           text};
     return record;
   };

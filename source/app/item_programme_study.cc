@@ -76,13 +76,6 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
-
 std::string read_text(const std::string& path) {
   std::ifstream f(path);
   std::ostringstream s;
@@ -115,8 +108,8 @@ std::vector<Specimen> make_specimens(const std::vector<analysis::SyntheticGroupT
       p.s2 = t.law.s2 / kPa * factor();
       p.dc = t.law.dc / mm;
       p.sets = {"Cohesive law/Type=trilinear",
-                "Cohesive law/Points=0.1:" + num(p.s1) + ", 1.0:" + num(p.s2),
-                "Cohesive law/Delta c=" + num(p.dc), "Cohesive law/J tip=" + num(t.j_tip)};
+                "Cohesive law/Points=0.1:" + fmt(p.s1, 10) + ", 1.0:" + fmt(p.s2, 10),
+                "Cohesive law/Delta c=" + fmt(p.dc, 10), "Cohesive law/J tip=" + fmt(t.j_tip, 10)};
       out.push_back(p);
     }
   return out;

@@ -37,10 +37,10 @@ TEST(Format, SplitListTrimsEachItemAndDropsEmptyOnes) {
 // The one number formatter (issue 40 item 6): it replaced printf %.<p>g copies, whose bytes the
 // outputs keep.
 TEST(Format, FmtIsPrintfSignificantDigits) {
-  for (const double v : {0.0, -0.0, 1.0, 0.0275, 26.2, 347.0, 1e6, 1.23456789e-7, -3.14159265358979,
-                         123456789.0, 1.0 / 3.0, 1e300, std::numeric_limits<double>::infinity(),
-                         -std::numeric_limits<double>::infinity(),
-                         std::numeric_limits<double>::quiet_NaN()})
+  for (const double v :
+       {0.0, -0.0, 1.0, 0.0275, 26.2, 347.0, 1e6, 1.23456789e-7, -3.14159265358979, 123456789.0,
+        1.0 / 3.0, 1e300, std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()})
     for (const int p : {4, 5, 6, 7, 9}) {
       char b[64];
       std::snprintf(b, sizeof b, "%.*g", p, v);
