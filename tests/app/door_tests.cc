@@ -49,6 +49,21 @@ ByRecord from_campaign_table(const fs::path& table, const std::string& method = 
 
 const std::string columns = "time_s: Time, opening_mm: Disp, load_N: Force, a_mm: CrackExt";
 
+/// The scene's `reduce` on the shared records (prm/test_records.prm), `extra` --set options.
+RunResult reduce_scene(const std::string& name, const std::string& extra) {
+  return run(name, "run " + source("prm/test_records.prm") +
+                       " --set 'Run=reduce' --set 'Output directory=out'" + extra);
+}
+
+/// The shared records as a campaign (prm/campaign_real_records.prm). That scene has no Material
+/// section: the records' quoted moduli, as test_records.prm has them.
+RunResult records_campaign(const std::string& name, const std::string& extra) {
+  return run(name, "run " + source("prm/campaign_real_records.prm") +
+                       " --set 'Output directory=out' --set 'Campaign/Bootstrap samples=20' "
+                       "--set 'Material/E_T=6110' --set 'Material/G_LT=2288'" +
+                       extra);
+}
+
 /// Runs the three doors with `extra_set` on both scenes and `extra_cli` on the command line.
 void expect_same_r(const std::string& name, const std::string& extra_set,
                    const std::string& extra_cli) {
@@ -63,17 +78,9 @@ void expect_same_r(const std::string& name, const std::string& extra_set,
                                           "--transverse-modulus 6110 --out out" +
                                           extra_cli);
   ASSERT_EQ(cli.exit_code, 0) << cli.err;
-  const auto scene =
-      run(name + "_scene", "run " + source("prm/test_records.prm") +
-                               " --set 'Run=reduce' --set 'Output directory=out'" + extra_set);
+  const auto scene = reduce_scene(name + "_scene", extra_set);
   ASSERT_EQ(scene.exit_code, 0) << scene.err;
-  // The campaign scene has no Material section: the records' quoted moduli, as test_records.prm.
-  const auto campaign = run(name + "_campaign", "run " + source("prm/campaign_real_records.prm") +
-                                                    " --set 'Output directory=out' --set "
-                                                    "'Campaign/Bootstrap samples=20' --set "
-                                                    "'Material/E_T=6110' --set "
-                                                    "'Material/G_LT=2288'" +
-                                                    extra_set);
+  const auto campaign = records_campaign(name + "_campaign", extra_set);
   ASSERT_EQ(campaign.exit_code, 0) << campaign.err;
   const ByRecord a = from_reduce_summary(work(name + "_cli") / "out" / "summary.json");
   const ByRecord b = from_reduce_summary(work(name + "_scene") / "out" / "summary.json");
@@ -110,15 +117,10 @@ TEST(OneDoor, EquivalentCrackIsTheSameThroughEveryDoor) {
 // R(a)-only groups (issue 39 item 4): the campaign takes J_tip and G_ss from the estimator the
 // scene names and lists every estimator beside it, each the number `reduce` gives the record.
 TEST(OneDoor, CampaignTakesTheNamedRaEstimator) {
-  const auto scene = run("door_methods_scene", "run " + source("prm/test_records.prm") +
-                                                   " --set 'Run=reduce' --set 'Output "
-                                                   "directory=out'");
+  const auto scene = reduce_scene("door_methods_scene", "");
   ASSERT_EQ(scene.exit_code, 0) << scene.err;
   const auto campaign =
-      run("door_methods_campaign", "run " + source("prm/campaign_real_records.prm") +
-                                       " --set 'Output directory=out' --set 'Campaign/Bootstrap "
-                                       "samples=20' --set 'Material/E_T=6110' --set "
-                                       "'Material/G_LT=2288' --set 'Campaign/R(a) estimator=MBT'");
+      records_campaign("door_methods_campaign", " --set 'Campaign/R(a) estimator=MBT'");
   ASSERT_EQ(campaign.exit_code, 0) << campaign.err;
   const fs::path table = work("door_methods_campaign") / "out" / "campaign_specimens.csv";
   const fs::path summary = work("door_methods_scene") / "out" / "summary.json";
