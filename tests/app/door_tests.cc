@@ -1,13 +1,14 @@
 // One chain, one door (issue 39 item 3; analysis/record_chain.h): the shared real records
 // (data/dcb_records) through every door that reads and reduces raw records give the same R(a)
-// numbers: `fiberbridge reduce`, the scene item `reduce` (prm/test_records.prm) and the campaign's
-// raw-record rows (prm/campaign_real_records.prm), on the defaults and with the equivalent crack
-// (CBBM's G13 and E22 from the Material section), which the campaign used to skip.
+// numbers: `fiberbridge reduce`, the scene item `reduce` (prm/test_records.prm's sections) and the
+// campaign's raw-record rows (prm/campaign_real_records.prm), on the defaults and with the
+// equivalent crack (CBBM's G13 and E22 from the Material section), which the campaign used to skip.
 #include "fiberbridge/core/csv.h"
 #include "scene_runner.h"
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <map>
 
 using namespace fiberbridge;
@@ -49,10 +50,24 @@ ByRecord from_campaign_table(const fs::path& table, const std::string& method = 
 
 const std::string columns = "time_s: Time, opening_mm: Disp, load_N: Force, a_mm: CrackExt";
 
-/// The scene's `reduce` on the shared records (prm/test_records.prm), `extra` --set options.
+/// The scene's `reduce` on the shared records, with prm/test_records.prm's Specimen, Test and
+/// Material sections (that scene also holds an FEM section, which a build without the FEM
+/// refuses); `extra` --set options.
 RunResult reduce_scene(const std::string& name, const std::string& extra) {
-  return run(name, "run " + source("prm/test_records.prm") +
-                       " --set 'Run=reduce' --set 'Output directory=out'" + extra);
+  const fs::path in = work(name + "_in");
+  fs::create_directories(in);
+  std::string files;
+  for (const char* r : records)
+    files += std::string(files.empty() ? "" : ", ") + source("data/dcb_records/") + r + ".csv";
+  std::ofstream(in / "scene.prm") << "set Run = reduce\n"
+                                     "subsection Specimen\n  set Width = 25\n  set Height = 5.4\n"
+                                     "  set Length = 123\nend\n"
+                                     "subsection Test\n  set Files = "
+                                  << files << "\n  set Columns = " << columns
+                                  << "\nend\n"
+                                     "subsection Material\n  set E_L = 19300\n  set E_T = 6110\n"
+                                     "  set G_LT = 2288\n  set nu_LT = 0.3\nend\n";
+  return run(name, "run " + (in / "scene.prm").string() + " --set 'Output directory=out'" + extra);
 }
 
 /// The shared records as a campaign (prm/campaign_real_records.prm). That scene has no Material
