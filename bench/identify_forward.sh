@@ -4,7 +4,7 @@
 # one run: the scene's wall time, identify's own wall_time_s, forward runs, chi^2, load and crack
 # RMS and the identified parameters. The FEM route starts from the beam's identification (its
 # notes give the beam route's figures) and uses the FEM section of prm/test_records.prm with
-# FEM/Element size = auto (one law-free mesh for every trial, app/fem_forward_model.h) unless
+# FEM/Element size = auto (one law-free mesh for every trial, app/items/fem_forward_model.h) unless
 # FEM_SIZE is given (mm).
 # MAX_EVALUATIONS (environment) sets Identify/Max evaluations for both routes (default 300).
 # Usage: bench/identify_forward.sh [BUILD_DIR] [RECORD] [FEM_SIZE]   (RECORD: DCB-05 by default)

@@ -1,11 +1,11 @@
-// libFuzzer target: the scene reader (app/scene.cc read_scene_parameters: deal.II
+// libFuzzer target: the scene reader (app/scene/scene_reader.cc read_scene_parameters: deal.II
 // ParameterHandler with every section declared, unknown keys rejected, every section parsed once)
 // with `--set` overrides, then the sections every simulation reads (Cohesive law, Specimen,
 // Material). Input: a scene file; each line that starts
 // with "#--set " (a comment to deal.II, so bundled scenes are valid inputs as they are) adds the
 // rest of the line as one --set override.
-#include "fiberbridge/app/scene.h"
-#include "fiberbridge/app/scene_context.h"
+#include "fiberbridge/app/scene/scene_context.h"
+#include "fiberbridge/app/scene/scene_reader.h"
 #include "fuzz_input.h"
 
 #include <sstream>

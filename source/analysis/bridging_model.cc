@@ -246,4 +246,30 @@ double bridged_density(double sigma, double delta, double l_b, const BridgingFib
   return sigma / per_density;
 }
 
+BridgingEstimate estimate_bridging(double sigma, double delta, double zone_length,
+                                   const BridgingFiber& f) {
+  BridgingEstimate e;
+  e.sigma = sigma;
+  e.delta = delta;
+  e.zone_length = zone_length;
+  e.fiber = f;
+  e.rho_peeling = bridged_density(sigma, delta, zone_length, f, BridgingMechanism::peeling, true);
+  e.rho_breaking = bridged_density(sigma, delta, zone_length, f, BridgingMechanism::breaking, true);
+  e.rho_exact = bridged_density(sigma, delta, zone_length, f, BridgingMechanism::governing, false);
+  e.peeling_governs = r_b_peeling(delta / zone_length, f) < r_b_breaking(delta / zone_length, f);
+  return e;
+}
+
+double BridgingEstimate::stress_exact(double d) const {
+  return bridging_stress_exact(d, zone_length, rho_exact, fiber, BridgingMechanism::governing);
+}
+
+double BridgingEstimate::stress_eq13(double d) const {
+  return bridging_stress_eq13(d, zone_length, rho_exact, fiber);
+}
+
+double BridgingEstimate::stress_eq15(double d) const {
+  return bridging_stress_eq15(d, zone_length, rho_exact, fiber);
+}
+
 } // namespace fiberbridge::analysis

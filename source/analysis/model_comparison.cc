@@ -163,4 +163,28 @@ std::vector<ClosedLoopRow> closed_loop(const result::SimulationResult& r,
   return rows;
 }
 
+ModelComparison compare_simulations(const std::vector<const result::SimulationResult*>& models,
+                                    const law::TractionLaw& law, double j_tip, bool loop, int n,
+                                    int k) {
+  ModelComparison c;
+  for (std::size_t i = 0; i < models.size(); ++i)
+    for (std::size_t j = i + 1; j < models.size(); ++j)
+      for (auto& d : compare_models(*models[i], *models[j]))
+        c.pairs.push_back(std::move(d));
+  if (!loop)
+    return c;
+  for (const auto* r : models) {
+    ModelComparison::Loop l;
+    l.model = r->model;
+    try {
+      l.rows = closed_loop(*r, law, j_tip, n, k);
+    } catch (const ComputationError& e) {
+      // A model too coarse for the loop does not invalidate the comparison: say so.
+      l.diagnosis = e.what();
+    }
+    c.loops.push_back(std::move(l));
+  }
+  return c;
+}
+
 } // namespace fiberbridge::analysis

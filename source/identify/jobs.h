@@ -1,7 +1,7 @@
 #pragma once
 // How identify's independent jobs (optimizer starts, polish rounds, Jacobian columns) hand their
 // results back: each job's result as bytes, so that a runner may run it in another process
-// (IdentifyJobRunner, app/task_distributor.h spreads them over MPI ranks), and the forward-run
+// (IdentifyJobRunner, app/run/task_distributor.h spreads them over MPI ranks), and the forward-run
 // counts summed in the serial order whatever ran where.
 #include "misfit.h"
 

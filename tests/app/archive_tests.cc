@@ -1,12 +1,12 @@
-// identify's fit in the archive (app/identify_resume.h) and the resume record around any payload
-// (app/resume_store.h): a fit kept for --resume or sent from another rank comes back exactly; a
-// record is restored only under the inputs it was made with, and a record that is not one (cut
-// short, another file) is an InputError naming it.
-#include "fiberbridge/app/resume_store.h"
+// identify's fit in the archive (app/run/identify_resume.h) and the resume record around any
+// payload (app/run/resume_store.h): a fit kept for --resume or sent from another rank comes back
+// exactly; a record is restored only under the inputs it was made with, and a record that is not
+// one (cut short, another file) is an InputError naming it.
+#include "fiberbridge/app/run/resume_store.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/json_archive.h"
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
-#include "fiberbridge/app/identify_resume.h"
+#include "fiberbridge/app/run/identify_resume.h"
 #endif
 
 #include <gtest/gtest.h>

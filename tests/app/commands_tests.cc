@@ -1,9 +1,10 @@
-// The command line in process (app/commands.h): main.cc only starts MPI, so the commands are
+// The command line in process (app/cli/commands.h): main.cc only starts MPI, so the commands are
 // library code and are tested here without spawning the executable (app_tests.cc spawns it).
-// The Test section's struct (app/test_section.h) is read here too: reduce and identify share it.
-#include "fiberbridge/app/commands.h"
-#include "fiberbridge/app/section.h"
-#include "fiberbridge/app/test_section.h"
+// The Test section's struct (app/scene/test_section.h) is read here too: reduce and identify share
+// it.
+#include "fiberbridge/app/cli/commands.h"
+#include "fiberbridge/app/scene/section.h"
+#include "fiberbridge/app/scene/test_section.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 

@@ -1,10 +1,11 @@
-// The FEM as identify's forward model (issue 34 item 4; app/fem_forward_model.h): a record written
-// by the FEM from a known law (the IdentifyFromFem set-up of tests/identify/identify_fem_tests.cc
-// on a coarse mesh) identified with the beam and then with the FEM from the beam's optimum, as
-// `Identify/Forward model = fem` does (item_identify.cc, fit_records).
+// The FEM as identify's forward model (issue 34 item 4; app/items/fem_forward_model.h): a record
+// written by the FEM from a known law (the IdentifyFromFem set-up of
+// tests/identify/identify_fem_tests.cc on a coarse mesh) identified with the beam and then with the
+// FEM from the beam's optimum, as `Identify/Forward model = fem` does (item_identify.cc,
+// fit_records).
 #include "../identify/record_specimen.h"
 #include "fiberbridge/analysis/synthetic_record.h"
-#include "fiberbridge/app/fem_forward_model.h"
+#include "fiberbridge/app/items/fem_forward_model.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/fem/distributed_dcb.h"
 #include "fiberbridge/identify/identify.h"

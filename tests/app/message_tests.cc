@@ -1,8 +1,8 @@
 // Messages and numeric checks of the command line and the scene reader (issues 40 item 7 and 42
 // item 6): each input the fuzzer found passing, or failing with a misleading or garbled message,
 // is refused with one line naming the option or key, the value and what was expected.
-#include "fiberbridge/app/commands.h"
-#include "fiberbridge/app/scene.h"
+#include "fiberbridge/app/cli/commands.h"
+#include "fiberbridge/app/scene/scene_reader.h"
 #include "fiberbridge/core/error.h"
 
 #include <gtest/gtest.h>

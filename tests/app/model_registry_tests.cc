@@ -1,8 +1,9 @@
-// The registry of simulation models (app/models.h): every built model runs through the same
+// The registry of simulation models (app/scene/models.h): every built model runs through the same
 // interface (declare through the scene's sections, check, run, report) on one small specimen, and
 // the registry is the one list the scene's items come from.
-#include "fiberbridge/app/models.h"
-#include "fiberbridge/app/scene.h"
+#include "fiberbridge/app/items/campaign_simulation.h"
+#include "fiberbridge/app/scene/models.h"
+#include "fiberbridge/app/scene/scene_reader.h"
 #include "fiberbridge/core/error.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -73,6 +74,50 @@ TEST(ModelRegistry, SceneItemsComeFromTheRegistryInCostOrder) {
   EXPECT_EQ(items[items.size() - 3].name, "study");
   EXPECT_EQ(items[items.size() - 2].name, "chain study");
   EXPECT_EQ(items.back().name, "programme study");
+}
+
+// Each model's item file defines its entry by name (items/item_<model>.cc), compiled in every
+// build: a model left out of FIBERBRIDGE_MODELS still has its card, so scenes and messages name
+// it, and a built one has every function the scene, the campaign and the study call.
+TEST(ModelRegistry, EveryModelHasItsCardAndEveryBuiltOneItsFunctions) {
+  ASSERT_FALSE(app::simulation_models().empty());
+  int identify_own = 0;
+  for (const auto& m : app::simulation_models()) {
+    ASSERT_NE(m.name, nullptr);
+    ASSERT_NE(m.section, nullptr) << m.name;
+    EXPECT_FALSE(std::string(m.name).empty());
+    EXPECT_FALSE(std::string(m.section).empty()) << m.name;
+    EXPECT_FALSE(std::string(m.ladder_doc).empty()) << m.name;
+    EXPECT_FALSE(std::string(m.target_key).empty()) << m.name;
+    EXPECT_GT(m.cost, 0) << m.name;
+    identify_own += m.identify_builtin;
+    if (m.built) {
+      EXPECT_NE(m.parse, nullptr) << m.name;
+      EXPECT_NE(m.simulate, nullptr) << m.name;
+    } else {
+      EXPECT_EQ(m.declare, nullptr) << m.name;
+      EXPECT_EQ(m.simulate, nullptr) << m.name;
+    }
+  }
+  // identify has one model of its own (the beam); the others offer identify_forward.
+  EXPECT_EQ(identify_own, 1);
+  // The campaign's Fig. 10 offers the finite-element models first, then the others cheapest first.
+  const auto offered = app::campaign_simulation_models();
+  bool past_fe = false;
+  double last_cost = 0;
+  for (const auto& name : offered) {
+    const app::SimulationModel* m = app::built_model(name);
+    ASSERT_NE(m, nullptr) << name;
+    if (m->finite_elements) {
+      EXPECT_FALSE(past_fe) << name << " after a model that is not finite elements";
+      continue;
+    }
+    if (past_fe) { // braces: EXPECT_LE is an if-else of its own (-Wdangling-else)
+      EXPECT_LE(last_cost, m->cost) << name;
+    }
+    past_fe = true;
+    last_cost = m->cost;
+  }
 }
 
 TEST(ModelRegistry, EveryBuiltModelRunsThroughTheSameInterface) {

@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* marker = "RUN_INCOMPLETE.txt"; // app/analysis_steps.h incomplete_marker
+const char* marker = "RUN_INCOMPLETE.txt"; // app/outputs/run_directory.h incomplete_marker
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

@@ -1,10 +1,11 @@
-// The scene's parameters parsed once (app/scene_parameters.h): every section read into its struct
-// when the scene is read, a section's error kept and thrown where an item reads it (naming section
-// and key), and a study's copy with its own settings parsed anew, the scene's own untouched.
-// Structurally, the items cannot reach the ParameterHandler: SceneContext holds only the parsed
-// parameters, and the handler is a local of the scene reader (scene.cc), gone before any check.
-#include "fiberbridge/app/scene.h"
-#include "fiberbridge/app/scene_parameters.h"
+// The scene's parameters parsed once (app/scene/scene_parameters.h): every section read into its
+// struct when the scene is read, a section's error kept and thrown where an item reads it (naming
+// section and key), and a study's copy with its own settings parsed anew, the scene's own
+// untouched. Structurally, the items cannot reach the ParameterHandler: SceneContext holds only the
+// parsed parameters, and the handler is a local of the scene reader (scene/scene_reader.cc), gone
+// before any check.
+#include "fiberbridge/app/scene/scene_parameters.h"
+#include "fiberbridge/app/scene/scene_reader.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 

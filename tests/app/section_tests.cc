@@ -2,7 +2,10 @@
 // a setting shared with another section has that section's name; the old name stays accepted with
 // a note in the run's notes, and both names given with different values is an error naming both
 // (core/renamed_key.h, the mechanism of FEM/Steady-state window).
-#include "fiberbridge/app/items.h"
+#include "fiberbridge/app/items/item_beam.h"
+#include "fiberbridge/app/items/item_mpm.h"
+#include "fiberbridge/app/items/items.h"
+#include "fiberbridge/app/scene/models.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 
@@ -41,7 +44,7 @@ bool has_note(const std::vector<std::string>& notes, const std::string& text) {
 namespace {
 beam::BeamParameters beam_section(const std::string& sets) {
   dealii::ParameterHandler prm;
-  app::declare_beam_section(prm);
+  app::find_model("beam")->declare(prm);
   prm.parse_input_from_string("subsection Beam\n" + sets + "end\n");
   return app::read_beam_section(prm);
 }
@@ -85,7 +88,7 @@ TEST(SceneSections, BeamBothNewtonIterationNamesDisagreeIsAnError) {
 namespace {
 mpm::MpmParameters mpm_section(const std::string& sets) {
   dealii::ParameterHandler prm;
-  app::declare_mpm_section(prm);
+  app::find_model("mpm")->declare(prm);
   prm.parse_input_from_string("subsection MPM\nset Cell size = 2.5\n" + sets + "end\n");
   return app::read_mpm_section(prm);
 }

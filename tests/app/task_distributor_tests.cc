@@ -1,8 +1,8 @@
-// The task distributor (include/fiberbridge/app/task_distributor.h) and a simulation result
+// The task distributor (include/fiberbridge/app/run/task_distributor.h) and a simulation result
 // crossing ranks in the archive (core/binary_archive.h, result/result_archive.h). Run on one
 // process (ctest discovers them) and under `mpirun -np 2` (AppTasks.TwoRanks): every test is
 // collective, so every rank runs it and checks what it got.
-#include "fiberbridge/app/task_distributor.h"
+#include "fiberbridge/app/run/task_distributor.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/result/result_archive.h"
 

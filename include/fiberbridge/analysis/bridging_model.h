@@ -60,4 +60,20 @@ double bridging_stress_eq15(double delta, double l_b, double rho_b, const Bridgi
 double bridged_density(double sigma, double delta, double l_b, const BridgingFiber& f,
                        BridgingMechanism m, bool small_k);
 
+/// The fiber-bridging model at one point of a measured law (seed section 3.4): the bridged-fiber
+/// densities that carry `sigma` at opening `delta` over a zone of length `zone_length` by Eq. 15
+/// (peeling), Eq. 13 (breaking) and the exact governing form, and which mechanism governs.
+struct BridgingEstimate {
+  double sigma = 0, delta = 0, zone_length = 0; ///< [Pa], [m], [m]
+  BridgingFiber fiber;
+  double rho_peeling = 0, rho_breaking = 0, rho_exact = 0; ///< [1/m^2]
+  bool peeling_governs = false;
+  /// The model's law at an opening: exact (governing), Eq. 13 and Eq. 15, with rho_exact [Pa].
+  double stress_exact(double d) const;
+  double stress_eq13(double d) const;
+  double stress_eq15(double d) const;
+};
+BridgingEstimate estimate_bridging(double sigma, double delta, double zone_length,
+                                   const BridgingFiber& f);
+
 } // namespace fiberbridge::analysis

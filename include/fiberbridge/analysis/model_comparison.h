@@ -2,7 +2,7 @@
 // Comparing simulations with each other and closing the loop through the extraction method
 // (docs/design.md section 3): analysis of result::SimulationResult, whichever model produced it, so
 // plain functions that are tested without running a model (tests/analysis/
-// model_comparison_tests.cc). The scene item `compare` (app/item_compare.cc) writes them out.
+// model_comparison_tests.cc). The scene item `compare` (app/items/item_compare.cc) writes them out.
 #include "fiberbridge/analysis/inverse.h"
 #include "fiberbridge/law/traction_law.h"
 #include "fiberbridge/result/rcurve.h"
@@ -43,5 +43,21 @@ struct ClosedLoopRow {
 /// simulation has fewer than n/4 distinct delta_root values below delta_c (too coarse to say).
 std::vector<ClosedLoopRow> closed_loop(const result::SimulationResult& r,
                                        const law::TractionLaw& law, double j_tip, int n, int k);
+
+/// What `compare` computes for the simulations of one scene: every pair's differences, and, when
+/// asked, each model's closed loop (or why it could not be run: a model too coarse for it).
+struct ModelComparison {
+  std::vector<PairwiseDifference> pairs;
+  struct Loop {
+    std::string model;
+    std::vector<ClosedLoopRow> rows; ///< empty when `diagnosis` says why
+    std::string diagnosis;
+  };
+  std::vector<Loop> loops;
+};
+/// The pairs in the order of `models` (a before b), then the closed loops with n, k when `loop`.
+ModelComparison compare_simulations(const std::vector<const result::SimulationResult*>& models,
+                                    const law::TractionLaw& law, double j_tip, bool loop, int n,
+                                    int k);
 
 } // namespace fiberbridge::analysis

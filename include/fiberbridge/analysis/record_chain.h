@@ -2,7 +2,7 @@
 // The records-to-R(a) settings that every door shares (docs/design.md, "Test records", "One chain,
 // one door"): the scene's `reduce`, `dic` then `reduce`, the campaign's raw-record and DIC-set
 // rows, `identify`, and `fiberbridge reduce` read and reduce a record with one value of this type.
-// A scene builds it once from its Test, Specimen and Material sections (app/test_section.h,
+// A scene builds it once from its Test, Specimen and Material sections (app/scene/test_section.h,
 // record_chain_options); the command line builds it from its options. Nothing else turns those
 // sections into reduce options, so no door can skip a setting the others use.
 #include "fiberbridge/analysis/record_reduction.h"

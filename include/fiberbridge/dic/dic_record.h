@@ -11,7 +11,7 @@
 namespace fiberbridge::dic {
 
 /// The machine record's channels in time order; the app reads it as `reduce` reads a record
-/// (app/dic_step.h, read_machine_record), so that one column map and one reader serve both.
+/// (app/items/dic_step.h, read_machine_record), so that one column map and one reader serve both.
 struct MachineRecord {
   std::string source;
   std::vector<double> time;    ///< [s], not decreasing

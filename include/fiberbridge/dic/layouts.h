@@ -1,8 +1,8 @@
 #pragma once
 // The DIC frame layouts, named once (issue 40 item 4): what each DIC package writes, as one entry
 // per layout that the frame reader (frame_reader.cc), the virtual DIC writer
-// (result/virtual_dic.cc) and the sections and options that name a layout (app/dic_section.cc,
-// fem/virtual_dic_parameters.cc, app/commands.cc) share.
+// (result/virtual_dic.cc) and the sections and options that name a layout
+// (app/scene/dic_section.cc, fem/virtual_dic_parameters.cc, app/cli/commands.cc) share.
 //
 // Adding a layout: its entry in source/dic/layout_<name>.cc (names, description, extension,
 // the reader's preset headers, the writer) and its name in FIBERBRIDGE_DIC_LAYOUTS below.

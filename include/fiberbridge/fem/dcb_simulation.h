@@ -111,7 +111,7 @@ struct FemParameters {
   };
 
   /// The Jacobian systems. (The deprecated key Engine is declared here: it chose the solver
-  /// stack; app/simulation_tasks.cc still reads its value distributed, docs/cluster.md.)
+  /// stack; app/run/simulation_tasks.cc still reads its value distributed, docs/cluster.md.)
   struct Linear {
     /// Solver of the condensed Jacobian systems. The direct solvers factorize once per release
     /// and take the interface points that change branch in between as a low-rank (Woodbury)

@@ -131,7 +131,7 @@ using IdentifyJob = std::function<std::string(std::size_t)>;
 /// returned in job order. `what` names the batch ("starts", "polish", "jacobian") for a log.
 /// The jobs only read shared state, so a runner may run them in any order, on any process that
 /// called identify_law with the same arguments (the app spreads them over MPI ranks,
-/// app/task_distributor.h); every caller must get every result. Collective when the runner is.
+/// app/run/task_distributor.h); every caller must get every result. Collective when the runner is.
 /// An empty runner runs them one after the other, in order (serial_jobs).
 using IdentifyJobRunner = std::function<std::vector<std::string>(
     const std::string& what, std::size_t n, const IdentifyJob& job)>;

@@ -1,0 +1,23 @@
+#pragma once
+// Scene item "identify" (items/item_identify.cc), compiled when the identify library is built
+// (FIBERBRIDGE_HAVE_IDENTIFY): its entry in the item registry, and what compare and extract ask of
+// it when it ran in the same scene.
+#include "fiberbridge/app/scene/scene_context.h"
+
+namespace dealii {
+class ParameterHandler;
+}
+
+namespace fiberbridge::app {
+
+void declare_identify_section(dealii::ParameterHandler& prm);
+void parse_identify_section(dealii::ParameterHandler& prm, SceneParameters& out);
+void check_identify_item(SceneContext& ctx);
+void run_identify_item(SceneContext& ctx);
+/// For compare: the identified law's simulations against the first record (identify_check).
+void check_identified_against_simulations(SceneContext& ctx);
+/// After extract, when identify ran in the same scene (records with delta_root): the three
+/// routes to the law side by side (law_routes.csv, summary block law_routes, law_routes.png).
+void report_law_routes(SceneContext& ctx);
+
+} // namespace fiberbridge::app

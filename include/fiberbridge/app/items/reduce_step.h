@@ -1,0 +1,19 @@
+#pragma once
+// `reduce` as a step shared by the command line (fiberbridge reduce) and the scene item
+// (section Test): raw DCB records in, R(a) by direct energy and by MBT/CC/MCC out.
+#include "fiberbridge/app/scene/step_outcomes.h"
+#include "fiberbridge/core/summary.h"
+#include "fiberbridge/specimen/specimen.h"
+
+#include <string>
+#include <vector>
+
+namespace fiberbridge::app {
+
+/// Reads and reduces every record; writes rcurve_test.csv, rcurve_test_mean.csv,
+/// record_clean_<name>.csv per record (the cleaned rows the plots show, new crack readings
+/// flagged), rdelta_test.csv when delta_root was measured (the R(delta_root) replicates that
+/// `fiberbridge extract` reads), and the plots; adds summary["reduce"].
+ReduceOutcome run_reduce(const ReduceStepOptions& o, const std::string& out_dir, Json& summary);
+
+} // namespace fiberbridge::app

@@ -1,0 +1,17 @@
+#pragma once
+// The files, plots and summary blocks of rank (analysis/law_extraction.h computes them).
+#include "fiberbridge/analysis/law_extraction.h"
+#include "fiberbridge/core/summary.h"
+
+#include <string>
+
+namespace fiberbridge::app {
+
+using analysis::RankOptions;
+
+/// degradation.csv, degradation_<material>.csv and .png per material, the `ranking` list and the
+/// `rank` block (degradation, materials, consistency); a warning per consistency issue.
+void write_ranking(const analysis::RankingOutcome& r, const RankOptions& o,
+                   const std::string& out_dir, Json& summary);
+
+} // namespace fiberbridge::app

@@ -1,0 +1,129 @@
+#include "fiberbridge/app/run/simulation_tasks.h"
+
+#include "fiberbridge/app/run/resume_store.h"
+#include "fiberbridge/app/run/task_distributor.h"
+#include "fiberbridge/app/scene/models.h"
+#include "fiberbridge/core/json_archive.h"
+#include "fiberbridge/core/output_guard.h"
+#include "fiberbridge/result/result_archive.h"
+
+#include <chrono>
+#include <functional>
+#include <iostream>
+#include <vector>
+
+namespace fiberbridge::app {
+
+namespace {
+
+/// What a simulation task hands back to rank 0: the item's summary block, the plots it made, its
+/// result and how long it took.
+struct SimulationTaskOutput {
+  Json block;
+  Json plots = Json::array();
+  result::SimulationResult result;
+  double wall_time_s = 0;
+};
+
+} // namespace
+} // namespace fiberbridge::app
+
+template <>
+struct fiberbridge::BinaryCodec<fiberbridge::app::SimulationTaskOutput> {
+  static void save(BinaryWriter& out, const app::SimulationTaskOutput& t) {
+    out.put(t.block);
+    out.put(t.plots);
+    out.put(t.result);
+    out.put(t.wall_time_s);
+  }
+  static void load(BinaryReader& in, app::SimulationTaskOutput& t) {
+    in.get(t.block);
+    in.get(t.plots);
+    in.get(t.result);
+    in.get(t.wall_time_s);
+  }
+};
+
+namespace fiberbridge::app {
+namespace {
+
+const char* task_output_kind = "fiberbridge simulation task";
+
+/// Relative cost, only to order the hand-out (the slowest model starts first); 0 for the items
+/// that are not simulations.
+double cost_of(const std::string& item) {
+  const SimulationModel* m = built_model(item);
+  return m ? m->cost : 0.0;
+}
+
+Json run_simulations(SceneContext& ctx, const std::set<std::string>& wanted, MPI_Comm comm) {
+  std::vector<const SceneItem*> sims;
+  for (const auto& item : scene_items())
+    if (const SimulationModel* m = built_model(item.name);
+        m && wanted.count(item.name) &&
+        !(m->needs_all_ranks && m->needs_all_ranks(ctx.parameters())))
+      sims.push_back(&item);
+  int n_ranks = 1;
+  MPI_Comm_size(comm, &n_ranks);
+  Json block = {{"ranks", n_ranks}, {"items", Json::array()}};
+  if (sims.empty() || (sims.size() == 1 && built_model(sims[0]->name)->uses_all_ranks))
+    return block; // one collective run (the FEM) or none: the items run as they are
+
+  std::vector<double> cost;
+  std::string names;
+  for (const auto* s : sims) {
+    cost.push_back(cost_of(s->name));
+    names += (names.empty() ? "" : ", ") + s->name;
+  }
+  if (output_enabled())
+    std::cerr << "fiberbridge: running " << names << " as independent tasks on " << n_ranks
+              << " ranks\n";
+  const auto done = run_tasks_across_ranks(
+      sims.size(),
+      [&](std::size_t i) {
+        const SceneItem& item = *sims[i];
+        SceneContext sub = ctx; // the parameters, the fitted law; the task's own summary
+        sub.summary = {{"plots", Json::array()}};
+        sub.results.clear();
+        TaskOwnsItsFiles own; // its model's files only: rcurve_<model>.csv, fields, PNG
+        const auto t0 = std::chrono::steady_clock::now();
+        run_or_restore_simulation_item(sub, item);
+        const double t =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return to_archive_bytes(SimulationTaskOutput{sub.summary[item.name], sub.summary["plots"],
+                                                     sub.results.at(item.name), t},
+                                task_output_kind);
+      },
+      comm, cost);
+  // Back into the scene in item order, as a serial run would have left them.
+  for (std::size_t i = 0; i < sims.size(); ++i) {
+    const std::string& name = sims[i]->name;
+    auto r = from_archive_bytes<SimulationTaskOutput>(done.output[i], task_output_kind);
+    ctx.summary[name] = std::move(r.block);
+    for (const auto& p : r.plots)
+      ctx.summary["plots"].push_back(p);
+    ctx.results[name] = std::move(r.result);
+    ctx.summary["item_wall_time_s"][name] = r.wall_time_s;
+    block["items"].push_back({{"item", name}, {"rank", done.rank[i]}});
+  }
+  return block;
+}
+
+} // namespace
+
+bool ran_as_simulation_task(SceneContext& ctx, const std::string& item,
+                            const std::set<std::string>& wanted) {
+  const MPI_Comm comm = simulation_communicator();
+  int n_ranks = 1;
+  MPI_Comm_size(comm, &n_ranks);
+  if (n_ranks == 1 || cost_of(item) == 0)
+    return false;
+  if (!ctx.summary.contains("simulation_tasks"))
+    ctx.summary["simulation_tasks"] = run_simulations(ctx, wanted, comm);
+  for (const auto& t : ctx.summary["simulation_tasks"]["items"])
+    if (t["item"] == item)
+      return true;
+  return false;
+}
+
+} // namespace fiberbridge::app
