@@ -1,10 +1,11 @@
 #pragma once
 // The simulation models of a scene (docs/design.md section 4, "One registry of models"), as ASPECT
 // registers its plugins: each model's item file (items/item_<model>.cc) defines its entry with
-// named fields, and items/models.cc lists the entries, one line per model. The scene runner,
-// resume, the task hand-out, the text report, compare, study, identify and the campaign ask the
-// registry; no other code names a model. A fourth model: its library, its item file and one line
-// in items/models.cc (design.md shows the files).
+// named fields, and items/models.cc calls the entry of every model CMake lists
+// (FIBERBRIDGE_ALL_MODELS). The scene runner, resume, the task hand-out, the text report,
+// compare, study, identify and the campaign ask the registry; no other code names a model. A
+// fourth model: its library, its item file and its name in FIBERBRIDGE_ALL_MODELS (design.md
+// shows the files).
 #include "fiberbridge/app/scene/scene_context.h"
 #include "fiberbridge/identify/forward_model.h"
 
