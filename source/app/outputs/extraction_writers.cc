@@ -24,7 +24,7 @@ void write_law_csv(const std::string& path, const std::vector<double>& delta,
 
 } // namespace
 
-void write_extraction(const ExtractionOutcome& e, const ExtractionOptions& o,
+void write_extraction(const analysis::ExtractionOutcome& e, const analysis::ExtractionOptions& o,
                       const std::string& out_dir, Json& summary) {
 
   {
@@ -90,7 +90,7 @@ void write_trilinear_fit(const analysis::TrilinearFit& fit, const std::string& o
                           {"breakpoints", fit.d1_d2_free ? "free (variable projection)" : "fixed"}};
 }
 
-void plot_extraction(const ExtractionOutcome& e, const analysis::TrilinearFit* fit,
+void plot_extraction(const analysis::ExtractionOutcome& e, const analysis::TrilinearFit* fit,
                      const std::string& out_dir, Json& summary) {
   // Forward R(delta) of the fitted law (Eq. 2) beside the data: the check a person looks at first.
   if (fit) {

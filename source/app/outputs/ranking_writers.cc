@@ -9,7 +9,7 @@
 
 namespace fiberbridge::app {
 
-void write_ranking(const analysis::RankingOutcome& r, const RankOptions& o,
+void write_ranking(const analysis::RankingOutcome& r, const analysis::RankOptions& o,
                    const std::string& out_dir, Json& summary) {
   const auto& table = r.table;
   const auto& rows = r.rows;

@@ -7,13 +7,10 @@
 
 namespace fiberbridge::app {
 
-using analysis::ExtractionOptions;
-using analysis::ExtractionOutcome;
-
 /// rdelta_averaged.csv, cohesive_law_eq5.csv, cohesive_law_dRdd.csv; the top-level keys of
 /// docs/design.md section 5 (J_tip_J_m2, G_ss_J_m2, delta_c_mm, peak_sigma_eq5_kPa,
 /// peak_sigma_dRdd_kPa) and the `extract` block.
-void write_extraction(const ExtractionOutcome& e, const ExtractionOptions& o,
+void write_extraction(const analysis::ExtractionOutcome& e, const analysis::ExtractionOptions& o,
                       const std::string& out_dir, Json& summary);
 
 /// trilinear_fit.csv and the summary's `trilinear` block.
@@ -22,7 +19,7 @@ void write_trilinear_fit(const analysis::TrilinearFit& fit, const std::string& o
 
 /// rdelta.png (the averaged R(delta), with the fitted law's Eq. 2 forward curve in
 /// rdelta_fit_forward.csv when `fit`) and cohesive_law.png (the Eq. 6 and R' laws, and the fit).
-void plot_extraction(const ExtractionOutcome& e, const analysis::TrilinearFit* fit,
+void plot_extraction(const analysis::ExtractionOutcome& e, const analysis::TrilinearFit* fit,
                      const std::string& out_dir, Json& summary);
 
 } // namespace fiberbridge::app

@@ -7,11 +7,9 @@
 
 namespace fiberbridge::app {
 
-using analysis::RankOptions;
-
 /// degradation.csv, degradation_<material>.csv and .png per material, the `ranking` list and the
 /// `rank` block (degradation, materials, consistency); a warning per consistency issue.
-void write_ranking(const analysis::RankingOutcome& r, const RankOptions& o,
+void write_ranking(const analysis::RankingOutcome& r, const analysis::RankOptions& o,
                    const std::string& out_dir, Json& summary);
 
 } // namespace fiberbridge::app
