@@ -185,13 +185,15 @@ int cmd_extract(const std::vector<std::string>& args) {
   o.half_width = vm["smoothing"].as<int>();
   const std::string out = vm["out"].as<std::string>();
   Json summary = begin_command_output(out, "extract");
-  const auto e = app::run_extraction(o, out, summary);
+  app::ItemReport report;
+  const auto e = app::run_extraction(o, out, report);
   app::FitOptions f;
   f.d1 = vm["delta1"].as<double>() * units::mm;
   f.d2 = vm["delta2"].as<double>() * units::mm;
   f.free_breakpoints = vm["free-breakpoints"].as<bool>();
-  const auto fit = app::run_trilinear_fit(e, f, out, summary);
-  app::plot_extraction(e, &fit, out, summary);
+  const auto fit = app::run_trilinear_fit(e, f, out, report);
+  app::plot_extraction(e, &fit, out, report);
+  app::add_report_to_summary(report, summary);
   app::write_run_summary(out, summary);
   std::cout << "J_tip " << e.steady.j_tip << " J/m^2, G_ss " << e.steady.G_ss << " J/m^2, delta_c "
             << e.steady.delta_c / units::mm << " mm; trilinear sigma1 " << fit.law.s1 / units::kPa
@@ -208,9 +210,11 @@ int cmd_rank(const std::vector<std::string>& args) {
     return 0;
   const std::string out = vm["out"].as<std::string>();
   Json summary = begin_command_output(out, "rank");
+  app::ItemReport report;
   app::RankOptions o;
   o.table_file = vm["table"].as<std::string>();
-  app::run_ranking(o, out, summary);
+  app::run_ranking(o, out, report);
+  app::add_report_to_summary(report, summary);
   app::write_run_summary(out, summary);
   std::cout << "ranking (most durable first):";
   for (const auto& m : summary["ranking"])
@@ -308,6 +312,7 @@ int cmd_reduce(const std::vector<std::string>& args) {
     return 0;
   const std::string out = vm["out"].as<std::string>();
   Json summary = begin_command_output(out, "reduce");
+  app::ItemReport report;
   app::ReduceStepOptions o;
   o.where = "fiberbridge reduce";
   o.files = vm["records"].as<std::vector<std::string>>();
@@ -335,7 +340,8 @@ int cmd_reduce(const std::vector<std::string>& args) {
   o.reduce.transverse_modulus = opt("transverse-modulus", 1e6);
   o.reduce.root_rotation = opt("root-rotation", units::mm);
   o.reduce.energy_crack = vm["energy-crack"].as<std::string>();
-  const auto r = app::run_reduce(o, out, summary);
+  const auto r = app::run_reduce(o, out, report);
+  app::add_report_to_summary(report, summary);
   app::write_run_summary(out, summary);
   for (const auto& x : r.reduced) // what makes a value uncertain is said where it is read
     if (!x.initiation.vis.note.empty())
@@ -418,7 +424,9 @@ int cmd_dic(const std::vector<std::string>& args) {
       option_in(vm, "initial-crack", 0.01, 1e5, "a crack length a0 in mm") * units::mm;
   const std::string out = vm["out"].as<std::string>();
   Json summary = begin_command_output(out, "dic");
-  const auto r = app::run_dic(o, out, summary);
+  app::ItemReport report;
+  const auto r = app::run_dic(o, out, report);
+  app::add_report_to_summary(report, summary);
   app::write_run_summary(out, summary);
   std::cout << r.analysis.frames.size() << " frame(s), " << r.analysis.frames_used << " used, "
             << r.rows.size() << " row(s) in " << r.record_path << "\n";

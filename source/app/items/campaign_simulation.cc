@@ -29,7 +29,7 @@ using units::mm;
 
 namespace {
 
-result::SimulationResult run_model(SceneContext& ctx, const std::string& model,
+result::SimulationResult run_model(const SceneContext& ctx, const std::string& model,
                                    const law::TractionLaw& law, double j_tip) {
   // One place chooses a model by name: the registry (models.h).
   const SimulationModel* m = built_model(model);
@@ -194,7 +194,7 @@ specimen::Specimen campaign_group_specimen(const specimen::Specimen& scene,
   return out;
 }
 
-std::vector<GroupSimulation> simulate_campaign_laws(SceneContext& ctx,
+std::vector<GroupSimulation> simulate_campaign_laws(const SceneContext& ctx,
                                                     const analysis::CampaignResult& r,
                                                     const std::string& model) {
   std::vector<const analysis::CampaignGroup*> groups;

@@ -8,7 +8,7 @@ namespace fiberbridge::app {
 void declare_chain_study_section(dealii::ParameterHandler& prm);
 void parse_chain_study_section(dealii::ParameterHandler& prm, SceneParameters& out);
 void check_chain_study_item(SceneContext& ctx);
-void run_chain_study_item(SceneContext& ctx);
+ItemOutcome run_chain_study_item(const SceneContext& ctx);
 
 } // namespace fiberbridge::app
 
@@ -19,6 +19,6 @@ namespace fiberbridge::app {
 void declare_programme_study_section(dealii::ParameterHandler& prm);
 void parse_programme_study_section(dealii::ParameterHandler& prm, SceneParameters& out);
 void check_programme_study_item(SceneContext& ctx);
-void run_programme_study_item(SceneContext& ctx);
+ItemOutcome run_programme_study_item(const SceneContext& ctx);
 
 } // namespace fiberbridge::app

@@ -1,6 +1,8 @@
 // The dic step: frames + machine record -> dic_record.csv for reduce (dic_step.h).
 #include "fiberbridge/app/items/dic_step.h"
 
+#include "fiberbridge/app/scene/dic_section.h"
+#include "fiberbridge/app/scene/test_section.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
 #include "fiberbridge/core/output_guard.h"
@@ -54,7 +56,7 @@ std::vector<std::string> dic_record_comments(const DicStepOptions& o, const DicM
               " frames inside its time span; *_sd_mm: one standard deviation"};
 }
 
-DicOutcome run_dic(const DicStepOptions& o, const std::string& out_dir, Json& summary) {
+DicOutcome run_dic(const DicStepOptions& o, const std::string& out_dir, ItemReport& report) {
   const auto t0 = std::chrono::steady_clock::now();
   DicMatch match = match_dic_frames(o);
   const std::vector<std::string> comments =
@@ -83,11 +85,35 @@ DicOutcome run_dic(const DicStepOptions& o, const std::string& out_dir, Json& su
     private_copies.paths.push_back(r.record_path);
   }
   write_dic_frames(out_dir, o, r.analysis);
-  plot_dic(out_dir, o, r, summary);
-  summary["dic"] = dic_summary(o, r, notes);
-  summary["dic"]["wall_time_s"] =
+  plot_dic(out_dir, o, r, report);
+  report["dic"] = dic_summary(o, r, notes);
+  report["dic"]["wall_time_s"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
+}
+
+/// The DIC and Test sections as the item uses them; every file must exist.
+DicStepOptions dic_step_options(const SceneContext& ctx) {
+  const auto& d = ctx.parameters().section<DicSection>("DIC");
+  const auto& t = ctx.parameters().section<TestSection>("Test");
+  DicStepOptions o;
+  o.where = ctx.scene_file;
+  o.dic = d.options();
+  if (d.frames.empty())
+    throw InputError(ctx.scene_file + ": DIC/Frames names no frame; give a glob or a list");
+  o.frames =
+      dic::expand_frame_list(d.frames, std::filesystem::path(ctx.scene_file).parent_path().string(),
+                             ctx.scene_file + ": DIC/Frames");
+  const auto machine = t.resolved_files(ctx.scene_file);
+  if (machine.size() != 1)
+    throw InputError(ctx.scene_file +
+                     ": Test/Files must name the one machine record (time, "
+                     "opening, load) that the DIC frames belong to; it lists " +
+                     std::to_string(machine.size()));
+  o.machine_record = machine.front();
+  o.machine_read = ctx.record_chain().read;
+  o.initial_crack = ctx.specimen().initial_crack;
+  return o;
 }
 
 } // namespace fiberbridge::app

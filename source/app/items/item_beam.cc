@@ -128,17 +128,17 @@ static void check_beam_item(SceneContext& ctx) {
     beam::check_dcb_inputs(ctx.specimen(), ctx.material(), params);
 }
 
-static result::SimulationResult simulate_beam_law(SceneContext& ctx, const law::TractionLaw& law,
-                                                  double j_tip) {
+static result::SimulationResult simulate_beam_law(const SceneContext& ctx,
+                                                  const law::TractionLaw& law, double j_tip) {
   return beam::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip, beam_parameters(ctx));
 }
 
-static void run_beam_item(SceneContext& ctx) {
+static ItemOutcome run_beam_item(const SceneContext& ctx) {
   const beam::BeamParameters params = beam_parameters(ctx);
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
   result::SimulationResult result =
       beam::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params, progress);
-  report_simulation(ctx, std::move(result), "n_elements");
+  return report_simulation(ctx, std::move(result), "n_elements");
 }
 #endif // FIBERBRIDGE_HAVE_BEAM
 

@@ -197,7 +197,7 @@ struct CampaignInputs {
       std::make_shared<std::map<std::size_t, std::pair<std::string, std::string>>>();
 };
 
-CampaignInputs campaign_inputs(SceneContext& ctx) {
+CampaignInputs campaign_inputs(const SceneContext& ctx) {
   CampaignInputs in;
   in.section = ctx.parameters().section<CampaignSection>("Campaign");
   in.manifest_path = std::filesystem::path(resolve_scene_path(in.section.manifest, ctx.scene_file))
@@ -329,12 +329,19 @@ void parse_campaign_section(dealii::ParameterHandler& prm, SceneParameters& out)
   }
 }
 
+analysis::CampaignResult analyse_scene_campaign(const SceneContext& ctx) {
+  const CampaignInputs in = campaign_inputs(ctx);
+  const auto manifest = analysis::read_campaign_manifest(in.manifest_path);
+  // The default runner: every group here, in order (the same numbers as any placement).
+  return analysis::analyse_campaign(manifest, in.raw, in.options, in.section.reference_materials);
+}
+
 void check_campaign_item(SceneContext& ctx) {
   // The manifest's own errors (missing file, duplicates: manifest:line) before any item runs.
   analysis::read_campaign_manifest(campaign_inputs(ctx).manifest_path);
 }
 
-void run_campaign_item(SceneContext& ctx) {
+ItemOutcome run_campaign_item(const SceneContext& ctx) {
   const CampaignInputs in = campaign_inputs(ctx);
   const auto manifest = analysis::read_campaign_manifest(in.manifest_path);
   const auto t0 = std::chrono::steady_clock::now();
@@ -373,12 +380,14 @@ void run_campaign_item(SceneContext& ctx) {
   // table behind (and no summary.json, run/scene_runner.cc).
   if (!w.simulations.empty())
     w.simulation_pngs = write_campaign_simulation_files(result, w.simulations, ctx.output_dir);
-  write_campaign_outputs(result, w, ctx.output_dir, ctx.summary);
+  ItemOutcome out;
+  write_campaign_outputs(result, w, ctx.output_dir, out.report);
   for (const auto& [line, file] : *in.dic_records) {
     write_file_atomically(ctx.out(file.first), file.second);
-    ctx.summary["campaign"]["dic_records"].push_back(file.first);
+    out.report["campaign"]["dic_records"].push_back(file.first);
   }
-  ctx.summary["campaign"]["ranks"] = ranks;
+  out.report["campaign"]["ranks"] = ranks;
+  return out;
 }
 
 } // namespace fiberbridge::app

@@ -269,7 +269,7 @@ void check_chain_study_item(SceneContext& ctx) {
         scene_parameters_with(ctx.parameters(), c.sets, "Chain study case " + c.name)->law());
 }
 
-void run_chain_study_item(SceneContext& ctx) {
+ItemOutcome run_chain_study_item(const SceneContext& ctx) {
   const auto& section = ctx.parameters().section<ChainStudySection>("Chain study");
   const auto table =
       analysis::read_property_table(resolve_scene_path(section.table1, ctx.scene_file));
@@ -286,7 +286,9 @@ void run_chain_study_item(SceneContext& ctx) {
               << (r.missed.empty() ? "" : " (missed: " + r.missed + ")") << ", "
               << r.fem_wall_s + r.chain_wall_s << " s" << std::endl;
   }
-  write_chain_study(ctx, rows, seconds_since(t0));
+  ItemOutcome out;
+  write_chain_study(ctx, rows, seconds_since(t0), out.report);
+  return out;
 }
 
 } // namespace fiberbridge::app

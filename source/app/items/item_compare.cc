@@ -63,7 +63,8 @@ void check_compare_item(SceneContext& ctx) {
   ctx.law_known_before_run();
 }
 
-void run_compare_item(SceneContext& ctx) {
+ItemOutcome run_compare_item(const SceneContext& ctx) {
+  ItemOutcome out;
   if (ctx.results.empty())
     throw InputError("Run: 'compare' needs at least one simulation (" + model_names() +
                      ") in the same scene");
@@ -72,7 +73,7 @@ void run_compare_item(SceneContext& ctx) {
   const double j_tip = ctx.j_tip();
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
   if (ctx.identification)
-    check_identified_against_simulations(ctx);
+    check_identified_against_simulations(ctx, out.report);
 #endif
 
   std::vector<const result::SimulationResult*> models;
@@ -80,7 +81,8 @@ void run_compare_item(SceneContext& ctx) {
     models.push_back(&r);
   const analysis::ModelComparison c =
       analysis::compare_simulations(models, *law, j_tip, o.closed_loop, o.intervals, o.half_width);
-  write_comparison(c, models, *law, j_tip, ctx.output_dir, ctx.summary);
+  write_comparison(c, models, *law, j_tip, ctx.output_dir, out.report);
+  return out;
 }
 
 } // namespace fiberbridge::app

@@ -66,8 +66,8 @@ static void check_fem_item(SceneContext& ctx) {
     fem::check_dcb_inputs(ctx.specimen(), ctx.material(), params);
 }
 
-static result::SimulationResult simulate_fem_law(SceneContext& ctx, const law::TractionLaw& law,
-                                                 double j_tip) {
+static result::SimulationResult simulate_fem_law(const SceneContext& ctx,
+                                                 const law::TractionLaw& law, double j_tip) {
   auto params = fem_parameters(ctx);
   // No files: a virtual DIC test writes only for the scene's own FEM run.
   params.virtual_dic.settings.enabled = false;
@@ -76,12 +76,12 @@ static result::SimulationResult simulate_fem_law(SceneContext& ctx, const law::T
 }
 
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
-static identify::ForwardModel identify_forward_fem(SceneContext& ctx) {
+static identify::ForwardModel identify_forward_fem(const SceneContext& ctx) {
   return fem_forward_model(fem_parameters(ctx));
 }
 #endif
 
-static void run_fem_item(SceneContext& ctx) {
+static ItemOutcome run_fem_item(const SceneContext& ctx) {
   const auto params = fem_parameters(ctx);
   const MPI_Comm comm = simulation_communicator();
   const unsigned n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
@@ -93,8 +93,8 @@ static void run_fem_item(SceneContext& ctx) {
   result::SimulationResult result =
       fem::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params,
                         ctx.output_dir, progress, comm, &info);
-  report_simulation(ctx, std::move(result), "n_dofs");
-  auto& block = ctx.summary["fem"];
+  ItemOutcome outcome = report_simulation(ctx, std::move(result), "n_dofs");
+  auto& block = outcome.report["fem"];
   // summary.json keeps the keys of the time there were two engines: "engine" is "distributed",
   // the name the one engine had then (FEM/Engine is deprecated, parameters.cc).
   block["engine"] = "distributed";
@@ -117,6 +117,7 @@ static void run_fem_item(SceneContext& ctx) {
                    {"reason", info.mesh.reason}};
   block["factorizations"] = info.n_factorizations;
   block["newton_iterations"] = info.n_newton;
+  return outcome;
 }
 
 /// A FEM that is one big run over all ranks by request: 3D, or the distributed engine chosen.

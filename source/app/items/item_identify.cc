@@ -141,11 +141,12 @@ namespace {
 /// What a fit's bytes hold when it crosses from the rank that ran it (core/binary_archive.h).
 const char* fit_kind = "fiberbridge identify fit";
 
-/// The records of the Test section, read once: `reduce`'s (it ran before, scene order), else
-/// read here, as reduce reads them, and kept in the context (identify's check reads them, its run
-/// fits them).
-const std::vector<analysis::TestRecord>& scene_records(SceneContext& ctx) {
-  if (!ctx.records) {
+/// The records of the Test section: `reduce`'s (it ran before, scene order) or the ones identify's
+/// check read, else read here, as reduce reads them (identify's check reads them and keeps them
+/// in the context, its run fits them and hands them on when it read them).
+std::shared_ptr<const std::vector<analysis::TestRecord>> scene_records(const SceneContext& ctx) {
+  std::shared_ptr<const std::vector<analysis::TestRecord>> records = ctx.records;
+  if (!records) {
     // After `dic` (without reduce) the records are the ones dic wrote, read as reduce reads
     // them (item_reduce.cc); Test/Files then names the machine record.
     const auto& test = ctx.parameters().section<TestSection>("Test");
@@ -155,12 +156,12 @@ const std::vector<analysis::TestRecord>& scene_records(SceneContext& ctx) {
       files = ctx.records_from_dic;
       read.columns = {};
     }
-    ctx.records =
+    records =
         std::make_shared<std::vector<analysis::TestRecord>>(analysis::read_records(files, read));
   }
-  if (ctx.records->empty())
+  if (records->empty())
     throw InputError(ctx.scene_file + ": 'identify' needs records in Test/Files");
-  return *ctx.records;
+  return records;
 }
 
 /// identify's independent jobs (identify.h, IdentifyJobRunner) as tasks across the ranks of the
@@ -181,7 +182,7 @@ identify::IdentifyJobRunner jobs_across_ranks(Json* log, const std::string& fit)
 }
 
 /// The forward model of Identify/Forward model: empty (identify's own beam) or the registry's.
-identify::ForwardModel forward_model_of(SceneContext& ctx, const IdentifySection& section) {
+identify::ForwardModel forward_model_of(const SceneContext& ctx, const IdentifySection& section) {
   const SimulationModel* m = find_model(section.forward_model);
   if (m->identify_builtin)
     return {};
@@ -227,7 +228,7 @@ fit_records(const std::vector<analysis::TestRecord>& records, const specimen::Sp
 /// Each fit is kept for --resume as soon as it is finished when rank 0 ran it, else by rank 0
 /// after the gather (only rank 0 writes). `tasks` gets the batches with their ranks.
 std::vector<identify::Identification>
-run_or_restore_fits(SceneContext& ctx, const std::vector<std::string>& units,
+run_or_restore_fits(const SceneContext& ctx, const std::vector<std::string>& units,
                     const std::vector<std::vector<analysis::TestRecord>>& of,
                     const identify::IdentifySettings& settings, const specimen::Specimen& specimen,
                     const specimen::Material& quoted, const identify::ForwardModel& forward,
@@ -296,15 +297,19 @@ void check_identify_item(SceneContext& ctx) {
   // (its check has the Test section) and hands them on; when dic runs, the records are the
   // ones it will write (its check reads the machine record).
   if (!ctx.run_items.count("reduce") && !ctx.run_items.count("dic"))
-    scene_records(ctx);
+    ctx.records = scene_records(ctx);
   ctx.specimen_setup();
 }
 
-void run_identify_item(SceneContext& ctx) {
+ItemOutcome run_identify_item(const SceneContext& ctx) {
   const auto& section = ctx.parameters().section<IdentifySection>("Identify");
   const identify::IdentifySettings& settings = section;
   const bool per_record = section.per_record;
-  const auto& records = scene_records(ctx);
+  ItemOutcome out;
+  const auto records_read = scene_records(ctx);
+  if (records_read != ctx.records)
+    out.records = records_read; // read here: later items see the same records
+  const auto& records = *records_read;
   const SpecimenSetup setup = ctx.specimen_setup();
   const specimen::Specimen& specimen = setup.specimen;
   const specimen::Material& quoted = setup.material;
@@ -324,24 +329,25 @@ void run_identify_item(SceneContext& ctx) {
   auto fits =
       run_or_restore_fits(ctx, units, of, settings, specimen, quoted, forward, inputs, tasks);
   // Written: the summary block, the tables and plots (identify_writers.cc).
-  ctx.summary["identify"] = identify_summary(fits, settings, quoted, records);
-  ctx.summary["identify"]["forward_model"] = section.forward_model;
+  out.report["identify"] = identify_summary(fits, settings, quoted, records);
+  out.report["identify"]["forward_model"] = section.forward_model;
   // Which rank ran which job (not part of the identification: the rest of the summary is the
   // same on 1 and N ranks).
-  ctx.summary["identify_tasks"] = tasks;
-  auto id = std::make_shared<identify::Identification>(std::move(fits[0]));
-  write_identification(ctx, *id);
+  out.report["identify_tasks"] = tasks;
+  auto id = std::make_shared<const identify::Identification>(std::move(fits[0]));
+  write_identification(ctx, *id, out.report);
   // Handed on: later simulations get the identified law, J_tip and the first record's specimen.
-  ctx.handed_law = CrackLaw{std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(id->law)),
-                            id->j_tip, LawSource::identify};
+  out.law = CrackLaw{std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(id->law)),
+                     id->j_tip, LawSource::identify};
   SpecimenSetup identified{specimen, quoted, SpecimenSource::identify};
   identified.specimen.initial_crack = id->records.front().initial_crack;
   identified.material.E_L = id->records.front().E_L;
-  ctx.handed_specimen = identified;
-  ctx.identification = id;
+  out.specimen = identified;
+  out.identification = id;
+  return out;
 }
 
-void check_identified_against_simulations(SceneContext& ctx) {
+void check_identified_against_simulations(const SceneContext& ctx, ItemReport& report) {
   // The identified law back through each simulation, on the first record's specimen: the load
   // misfit of the simulated P(opening) against the measured one (large displacements mapped as in
   // identify).
@@ -364,7 +370,7 @@ void check_identified_against_simulations(SceneContext& ctx) {
     c.final_a = result.rcurve.back().a;
     checks.push_back(std::move(c));
   }
-  write_identified_against_simulations(ctx, rec, checks);
+  write_identified_against_simulations(ctx, rec, checks, report);
 }
 
 } // namespace fiberbridge::app

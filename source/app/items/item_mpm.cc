@@ -181,20 +181,20 @@ static void check_mpm_item(SceneContext& ctx) {
     mpm::check_dcb_inputs(ctx.specimen(), ctx.material(), params, law);
 }
 
-static result::SimulationResult simulate_mpm_law(SceneContext& ctx, const law::TractionLaw& law,
-                                                 double j_tip) {
+static result::SimulationResult simulate_mpm_law(const SceneContext& ctx,
+                                                 const law::TractionLaw& law, double j_tip) {
   mpm::MpmParameters params = mpm_parameters(ctx);
   params.resume = false;
   return mpm::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip, params, "", {});
 }
 
-static void run_mpm_item(SceneContext& ctx) {
+static ItemOutcome run_mpm_item(const SceneContext& ctx) {
   mpm::MpmParameters params = mpm_parameters(ctx);
   params.resume = ctx.resume;
   auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
   result::SimulationResult result = mpm::simulate_dcb(
       ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params, ctx.output_dir, progress);
-  report_simulation(ctx, std::move(result), "n_particles");
+  return report_simulation(ctx, std::move(result), "n_particles");
 }
 #endif // FIBERBRIDGE_HAVE_MPM
 

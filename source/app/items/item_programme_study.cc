@@ -174,7 +174,7 @@ void check_programme_study_item(SceneContext& ctx) {
       analysis::read_property_table(resolve_scene_path(s.table1, ctx.scene_file)));
 }
 
-void run_programme_study_item(SceneContext& ctx) {
+ItemOutcome run_programme_study_item(const SceneContext& ctx) {
   const auto& s = ctx.parameters().section<ProgrammeStudySection>("Programme study");
   const auto truth = analysis::table1_truth(
       analysis::read_property_table(resolve_scene_path(s.table1, ctx.scene_file)));
@@ -241,7 +241,9 @@ void run_programme_study_item(SceneContext& ctx) {
     o.refusal = e.what();
   }
   o.campaign_wall_s = seconds_since(t0);
-  write_programme_study(ctx, o);
+  ItemOutcome out;
+  write_programme_study(ctx, o, out.report);
+  return out;
 }
 
 } // namespace fiberbridge::app

@@ -22,7 +22,7 @@ void parse_test_section(dealii::ParameterHandler& prm, SceneParameters& out) {
 namespace {
 
 /// The Test section and the Specimen, as `reduce` uses them; every listed record must exist.
-ReduceStepOptions reduce_options(SceneContext& ctx) {
+ReduceStepOptions reduce_options(const SceneContext& ctx) {
   const auto& t = ctx.parameters().section<TestSection>("Test");
   ReduceStepOptions o;
   static_cast<analysis::RecordChainOptions&>(o) = ctx.record_chain();
@@ -45,26 +45,28 @@ void check_reduce_item(SceneContext& ctx) {
   reduce_options(ctx);
 }
 
-void run_reduce_item(SceneContext& ctx) {
+ItemOutcome run_reduce_item(const SceneContext& ctx) {
   const ReduceStepOptions o = reduce_options(ctx);
-  auto r = std::make_shared<const ReduceOutcome>(run_reduce(o, ctx.output_dir, ctx.summary));
+  ItemOutcome out;
+  auto r = std::make_shared<const ReduceOutcome>(run_reduce(o, ctx.output_dir, out.report));
   // Handed on as typed values (docs/design.md section 4): identify fits these records, and with
   // a measured notch-root opening on every record (run_reduce then also writes rdelta_test.csv)
   // extract and fit take R(delta_root) unless the scene names its own Data/File.
-  ctx.reduced = r;
-  ctx.records = std::shared_ptr<const std::vector<analysis::TestRecord>>(r, &r->records);
+  out.reduced = r;
+  out.records = std::shared_ptr<const std::vector<analysis::TestRecord>>(r, &r->records);
   const bool all_root =
       std::all_of(r->reduced.begin(), r->reduced.end(),
                   [](const analysis::ReducedRecord& x) { return !x.delta_root.empty(); });
   if (all_root) {
-    ctx.rdelta_root = std::make_shared<const analysis::RDeltaData>(
+    out.rdelta_root = std::make_shared<const analysis::RDeltaData>(
         analysis::to_rdelta(r->reduced, ctx.out("rdelta_test.csv")));
     // The key as set: reduce does not validate the Data section (extract does, when it runs).
     const bool data_file_given = !ctx.parameters().entry("Data/File").empty();
     if (!data_file_given)
-      ctx.summary["reduce"]["notes"].push_back("extract and fit use the records' R(delta_root) "
-                                               "(rdelta_test.csv): Data/File names no file");
+      out.report["reduce"]["notes"].push_back("extract and fit use the records' R(delta_root) "
+                                              "(rdelta_test.csv): Data/File names no file");
   }
+  return out;
 }
 
 } // namespace fiberbridge::app

@@ -66,12 +66,12 @@ const SceneItem& simulation_item(const std::string& model) {
 }
 
 /// Runs one simulation item in `sub` (a context derived from the scene's, with its own output
-/// folder and parameters) and returns its result.
-result::SimulationResult run_model(SceneContext& sub, const std::string& model) {
+/// folder and parameters) and returns its result (the run's own summary block stays in its
+/// outcome: the study reports the result).
+result::SimulationResult run_model(const SceneContext& sub, const std::string& model) {
   const SceneItem& item = simulation_item(model);
   std::filesystem::create_directories(sub.output_dir);
-  item.run(sub);
-  return sub.results.at(model);
+  return std::move(*item.run(sub).simulation);
 }
 
 struct Case {
@@ -218,7 +218,8 @@ LadderOutcome analyse_ladder(const Ladder& ladder, const TaskResults& done, std:
 }
 
 /// One ladder level: the model with the level's keys, in study/<model>_level<l>.
-result::SimulationResult run_ladder_level(SceneContext& ctx, const Ladder& ladder, std::size_t l) {
+result::SimulationResult run_ladder_level(const SceneContext& ctx, const Ladder& ladder,
+                                          std::size_t l) {
   std::vector<std::string> sets;
   for (const auto& [k, v] : ladder.keys)
     sets.push_back(section_of(ladder.model) + "/" + k + "=" + v[l]);
@@ -235,7 +236,7 @@ result::SimulationResult run_ladder_level(SceneContext& ctx, const Ladder& ladde
 
 /// One stability case with one model: outcome, diagnosis and wall time (the model's failures are
 /// outcomes here, not errors of the study).
-Json run_stability_case(SceneContext& ctx, const Case& c, const std::string& model,
+Json run_stability_case(const SceneContext& ctx, const Case& c, const std::string& model,
                         double plateau_tol) {
   std::cerr << "study: stability " << c.name << " with " << model << "\n";
   std::string outcome, diagnosis;
@@ -387,7 +388,7 @@ void check_study_item(SceneContext& ctx) {
   ctx.law_known_before_run();
 }
 
-void run_study_item(SceneContext& ctx) {
+ItemOutcome run_study_item(const SceneContext& ctx) {
   const auto& plan = ctx.parameters().section<StudySection>("Study");
   const auto& ladders = plan.ladders;
   const auto& stability_models = plan.stability_models;
@@ -460,11 +461,13 @@ void run_study_item(SceneContext& ctx) {
   int n_ranks = 1;
   MPI_Comm_size(simulation_communicator(), &n_ranks);
   block["ranks"] = n_ranks;
+  ItemOutcome out;
   if (!ladders.empty())
-    write_study_ladders(ctx, outcomes, block);
+    write_study_ladders(ctx, outcomes, block, out.report);
   if (!stability_models.empty())
     write_study_stability(ctx, stability_rows, block);
-  ctx.summary["study"] = block;
+  out.report["study"] = block;
+  return out;
 }
 
 } // namespace fiberbridge::app

@@ -164,7 +164,7 @@ constexpr std::size_t min_rows_per_replicate = 8;
 /// The Data section, its file resolved. `file_may_come_later`: reduce runs first and may hand on
 /// R(delta_root) itself. With no Data/File, the data are reduce's R(delta_root) (in memory, named
 /// by the rdelta_test.csv reduce also writes).
-ExtractionOptions data_options(SceneContext& ctx, bool file_may_come_later) {
+ExtractionOptions data_options(const SceneContext& ctx, bool file_may_come_later) {
   ExtractionOptions o = ctx.parameters().section<ExtractionOptions>("Data");
   if (!o.data_file.empty())
     o.data_file = existing_scene_file(o.data_file, "Data/File", ctx);
@@ -185,7 +185,7 @@ ExtractionOptions data_options(SceneContext& ctx, bool file_may_come_later) {
   return o;
 }
 
-RankOptions rank_options(SceneContext& ctx) {
+RankOptions rank_options(const SceneContext& ctx) {
   RankOptions o = ctx.parameters().section<RankOptions>("Rank");
   o.table_file = existing_scene_file(o.table_file, "Rank/Table file", ctx);
   return o;
@@ -229,15 +229,17 @@ void check_extract_item(SceneContext& ctx) {
   data_options(ctx, ctx.run_items.count("reduce") > 0);
 }
 
-void run_extract_item(SceneContext& ctx) {
-  auto e = std::make_shared<ExtractionOutcome>(
-      run_extraction(data_options(ctx, false), ctx.output_dir, ctx.summary));
-  ctx.extraction = e;
+ItemOutcome run_extract_item(const SceneContext& ctx) {
+  ItemOutcome out;
+  auto e = std::make_shared<const ExtractionOutcome>(
+      run_extraction(data_options(ctx, false), ctx.output_dir, out.report));
+  out.extraction = e;
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
   // identify ran before (scene order): its law beside Eq. 5/6 and dR/d delta on the same data.
   if (ctx.identification)
-    report_law_routes(ctx);
+    report_law_routes(*e, *ctx.identification, ctx.output_dir, out.report);
 #endif
+  return out;
 }
 
 void check_fit_item(SceneContext& ctx) {
@@ -245,24 +247,28 @@ void check_fit_item(SceneContext& ctx) {
   ctx.parameters().section<FitOptions>("Fit");
 }
 
-void run_fit_item(SceneContext& ctx) {
-  if (!ctx.extraction)
-    run_extract_item(ctx); // fit works on the extracted law: it implies extract
+ItemOutcome run_fit_item(const SceneContext& ctx) {
+  // fit works on the extracted law: it implies extract, whose outcome it then hands on too.
+  ItemOutcome out = ctx.extraction ? ItemOutcome{} : run_extract_item(ctx);
+  const ExtractionOutcome& extraction = ctx.extraction ? *ctx.extraction : *out.extraction;
   const FitOptions& o = ctx.parameters().section<FitOptions>("Fit");
-  const auto fit = run_trilinear_fit(*ctx.extraction, o, ctx.output_dir, ctx.summary);
+  const auto fit = run_trilinear_fit(extraction, o, ctx.output_dir, out.report);
   // The extracted law is handed to the simulations without being retyped
   // (docs/design.md section 5).
-  ctx.handed_law = CrackLaw{std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(fit.law)),
-                            ctx.extraction->steady.j_tip, LawSource::fit};
-  plot_extraction(*ctx.extraction, &fit, ctx.output_dir, ctx.summary);
+  out.law = CrackLaw{std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(fit.law)),
+                     extraction.steady.j_tip, LawSource::fit};
+  plot_extraction(extraction, &fit, ctx.output_dir, out.report);
+  return out;
 }
 
 void check_rank_item(SceneContext& ctx) {
   rank_options(ctx);
 }
 
-void run_rank_item(SceneContext& ctx) {
-  run_ranking(rank_options(ctx), ctx.output_dir, ctx.summary);
+ItemOutcome run_rank_item(const SceneContext& ctx) {
+  ItemOutcome out;
+  run_ranking(rank_options(ctx), ctx.output_dir, out.report);
+  return out;
 }
 
 void check_bridging_item(SceneContext& ctx) {
@@ -270,7 +276,8 @@ void check_bridging_item(SceneContext& ctx) {
     ctx.law_known_before_run();
 }
 
-void run_bridging_item(SceneContext& ctx) {
+ItemOutcome run_bridging_item(const SceneContext& ctx) {
+  ItemOutcome out;
   const auto& in = ctx.parameters().section<BridgingSection>("Bridging");
   const analysis::BridgingFiber& f = in.fiber;
   const double l_b = in.zone_length, delta = in.opening;
@@ -287,7 +294,8 @@ void run_bridging_item(SceneContext& ctx) {
                        std::to_string(delta / mm) + " mm; set Bridging/Stress");
   }
   write_bridging(analysis::estimate_bridging(sigma, delta, l_b, f), stress_source, ctx.output_dir,
-                 ctx.summary);
+                 out.report);
+  return out;
 }
 
 } // namespace fiberbridge::app

@@ -15,13 +15,12 @@ namespace fiberbridge::app {
 using units::kPa;
 using units::mm;
 
-void report_law_routes(SceneContext& ctx) {
-  const auto& e = *ctx.extraction;
-  const auto& id = *ctx.identification;
+void report_law_routes(const ExtractionOutcome& e, const identify::Identification& id,
+                       const std::string& out_dir, ItemReport& report) {
   const auto routes =
       analysis::compare_law_routes(e.laws, law::make_trilinear(id.law), nullptr, 1001);
   {
-    CsvWriter w(ctx.out("law_routes.csv"),
+    CsvWriter w(out_dir + "/law_routes.csv",
                 {"delta_mm", "sigma_eq5_kPa", "sigma_dRdd_kPa", "sigma_identified_kPa"},
                 {"the three routes to the law on one grid: seed Eq. 5/6 and sigma = dR/ddelta "
                  "from R(delta_root) (extract), and the law identified from load, opening and "
@@ -53,8 +52,8 @@ void report_law_routes(SceneContext& ctx) {
        "the routes, the peak and the shape do",
        "identified: the beam model fitted to load-opening and crack-length-opening (delta_root "
        "not used); Eq. 5/6 and dR/ddelta: R_energy(delta_root) of reduce"});
-  ctx.summary["law_routes"] = block;
-  if (run_gnuplot(ctx.output_dir,
+  report["law_routes"] = block;
+  if (run_gnuplot(out_dir,
                   gnuplot_png_preamble("law_routes.png") +
                       "set title 'three routes to the law on the same record(s)'\n"
                       "set xlabel 'opening {/Symbol d} (mm)'\nset ylabel '{/Symbol s} (kPa)'\n"
@@ -62,7 +61,7 @@ void report_law_routes(SceneContext& ctx) {
                       "title 'Eq. 5/6 from R({/Symbol d}_{root})', '' using 1:3 with lines lw 2 "
                       "dt 2 title 'dR/d{/Symbol d} (old method)', '' using 1:4 with lines lw 2 "
                       "title 'identified (load, opening, crack)'\n"))
-    ctx.summary["plots"].push_back("law_routes.png");
+    report.plots.push_back("law_routes.png");
 }
 
 } // namespace fiberbridge::app

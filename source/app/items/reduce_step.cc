@@ -5,28 +5,50 @@
 #include "fiberbridge/core/error.h"
 #include "outputs/reduce_writers.h"
 
+#include <algorithm>
+
 namespace fiberbridge::app {
 
-ReduceOutcome run_reduce(const ReduceStepOptions& o, const std::string& out_dir, Json& summary) {
+namespace {
+
+bool any_root(const ReduceOutcome& r) {
+  return std::any_of(r.records.begin(), r.records.end(),
+                     [](const analysis::TestRecord& x) { return !x.delta_root.empty(); });
+}
+
+bool all_root(const ReduceOutcome& r) {
+  return std::all_of(r.records.begin(), r.records.end(),
+                     [](const analysis::TestRecord& x) { return !x.delta_root.empty(); });
+}
+
+} // namespace
+
+ReduceOutcome reduce_records(const ReduceStepOptions& o) {
   if (o.files.empty())
     throw InputError(o.where + ": no record files given");
   o.specimen.check_test_geometry(o.where);
   // Read every record, reduce each to R(a), average them.
   ReduceOutcome r;
   r.records = analysis::read_records(o.files, o.read);
-  bool any_root = false, all_root = true;
-  for (const auto& rec : r.records) {
+  for (const auto& rec : r.records)
     r.reduced.push_back(analysis::reduce_record(rec, o.specimen, o.reduce));
-    any_root = any_root || !rec.delta_root.empty();
-    all_root = all_root && !rec.delta_root.empty();
-  }
   r.mean = analysis::average_reduced(r.reduced, o.reduce.plateau_fraction);
+  return r;
+}
+
+Json reduce_summary_block(const ReduceStepOptions& o, const ReduceOutcome& r) {
+  return reduce_summary(o, r, any_root(r), all_root(r));
+}
+
+ReduceOutcome run_reduce(const ReduceStepOptions& o, const std::string& out_dir,
+                         ItemReport& report) {
+  ReduceOutcome r = reduce_records(o);
   // Write: the tables, R(delta_root) when every record has it, the summary block, the plots.
   write_reduce_tables(r, out_dir);
-  if (any_root && all_root)
+  if (any_root(r) && all_root(r))
     write_reduce_rdelta(r, out_dir);
-  summary["reduce"] = reduce_summary(o, r, any_root, all_root);
-  plot_reduce(r, out_dir, summary);
+  report["reduce"] = reduce_summary_block(o, r);
+  plot_reduce(r, out_dir, report);
   return r;
 }
 

@@ -15,8 +15,8 @@ namespace fiberbridge::app {
 using units::mm;
 
 void add_campaign_simulation_summary(const analysis::CampaignResult& r,
-                                     const std::vector<GroupSimulation>& sims, Json& summary) {
-  auto& groups = summary["campaign"]["groups"];
+                                     const std::vector<GroupSimulation>& sims, ItemReport& report) {
+  auto& groups = report["campaign"]["groups"];
   for (const auto& s : sims)
     for (std::size_t i = 0; i < r.groups.size(); ++i)
       if (r.groups[i].material == s.material && r.groups[i].cycles == s.cycles)

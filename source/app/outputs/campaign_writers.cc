@@ -10,8 +10,12 @@ namespace fiberbridge::app {
 
 using analysis::CampaignResult;
 
+Json campaign_summary_block(const CampaignResult& r, const CampaignWriteOptions& w) {
+  return campaign_out::summary_block(r, w);
+}
+
 void write_campaign_outputs(const CampaignResult& r, const CampaignWriteOptions& w,
-                            const std::string& out_dir, Json& summary) {
+                            const std::string& out_dir, ItemReport& report) {
   campaign_out::write_table1(r, out_dir);
   campaign_out::write_groups_table(r, out_dir);
   campaign_out::write_specimens_table(r, out_dir);
@@ -30,10 +34,10 @@ void write_campaign_outputs(const CampaignResult& r, const CampaignWriteOptions&
   for (const auto& p : w.simulation_pngs)
     pngs.push_back(p);
   campaign_out::write_html(r, w, pngs, files, out_dir);
-  summary["campaign"] = campaign_out::summary_block(r, w);
-  add_campaign_simulation_summary(r, w.simulations, summary);
+  report["campaign"] = campaign_summary_block(r, w);
+  add_campaign_simulation_summary(r, w.simulations, report);
   for (const auto& p : pngs)
-    summary["plots"].push_back(p);
+    report.plots.push_back(p);
 }
 
 } // namespace fiberbridge::app

@@ -62,7 +62,8 @@ bool plot_factor(const SceneContext& ctx, const std::vector<ChainRow>& rows,
 }
 
 /// chain_identify.csv: identify's recovery beside the chain's (only the cases where it ran).
-void write_identified(SceneContext& ctx, const std::vector<ChainRow>& rows) {
+void write_identified(const SceneContext& ctx, const std::vector<ChainRow>& rows,
+                      ItemReport& report) {
   if (std::none_of(rows.begin(), rows.end(),
                    [](const ChainRow& r) { return !r.identified.outcome.empty(); }))
     return;
@@ -94,12 +95,13 @@ void write_identified(SceneContext& ctx, const std::vector<ChainRow>& rows) {
                      {"law_L2_err_rel", json_number(id.law_l2_rel)}});
   }
   w.close();
-  ctx.summary["chain_study_identify"] = {{"table_file", "chain_identify.csv"}, {"cases", cases}};
+  report["chain_study_identify"] = {{"table_file", "chain_identify.csv"}, {"cases", cases}};
 }
 
 } // namespace
 
-void write_chain_study(SceneContext& ctx, const std::vector<ChainRow>& rows, double wall_s) {
+void write_chain_study(const SceneContext& ctx, const std::vector<ChainRow>& rows, double wall_s,
+                       ItemReport& report) {
   CsvWriter w(ctx.out("chain_recovery.csv"),
               {"case",           "factor",          "outcome",          "stage",
                "targets_met",    "missed",          "reason",           "value",
@@ -137,7 +139,7 @@ void write_chain_study(SceneContext& ctx, const std::vector<ChainRow>& rows, dou
            r.chain_wall_s});
   w.close();
 
-  write_identified(ctx, rows);
+  write_identified(ctx, rows, report);
 
   Json block = Json::object();
   int n_refused = 0, n_met = 0, n_t1 = 0, n_t1_met = 0, n_t1_refused = 0;
@@ -181,14 +183,14 @@ void write_chain_study(SceneContext& ctx, const std::vector<ChainRow>& rows, dou
   block["table1_refused"] = n_t1_refused;
   block["wall_time_s"] = wall_s;
   block["cases"] = cases;
-  ctx.summary["chain_study"] = block;
+  report["chain_study"] = block;
   // Base values: 1 Hz, 0.002 mm noise (the scene's own; prm/study_chain.prm).
   if (plot_factor(ctx, rows, "frame_rate_Hz", 1.0, "frame rate [Hz]",
                   "chain_recovery_vs_frame_rate.png", true))
-    ctx.summary["plots"].push_back("chain_recovery_vs_frame_rate.png");
+    report.plots.push_back("chain_recovery_vs_frame_rate.png");
   if (plot_factor(ctx, rows, "noise_mm", 0.002, "displacement noise [mm]",
                   "chain_recovery_vs_noise.png", false))
-    ctx.summary["plots"].push_back("chain_recovery_vs_noise.png");
+    report.plots.push_back("chain_recovery_vs_noise.png");
 }
 
 } // namespace fiberbridge::app

@@ -39,6 +39,7 @@ struct ChainRow {
 
 /// chain_recovery.csv, chain_recovery_vs_frame_rate.png, chain_recovery_vs_noise.png and the
 /// summary block `chain_study`.
-void write_chain_study(SceneContext& ctx, const std::vector<ChainRow>& rows, double wall_s);
+void write_chain_study(const SceneContext& ctx, const std::vector<ChainRow>& rows, double wall_s,
+                       ItemReport& report);
 
 } // namespace fiberbridge::app

@@ -12,7 +12,7 @@ namespace fiberbridge::app {
 void write_comparison(const analysis::ModelComparison& c,
                       const std::vector<const result::SimulationResult*>& models,
                       const law::TractionLaw& law, double j_tip, const std::string& out_dir,
-                      Json& summary) {
+                      ItemReport& report) {
   Json block = Json::object();
   Json pairs = Json::array();
   {
@@ -60,7 +60,7 @@ void write_comparison(const analysis::ModelComparison& c,
                                     {"compare_load.png", lplot},
                                     {"compare_delta_root.png", dplot}})
     if (run_gnuplot(out_dir, script))
-      summary["plots"].push_back(png);
+      report.plots.push_back(png);
 
   if (!c.loops.empty()) {
     Json rows = Json::array();
@@ -112,12 +112,12 @@ void write_comparison(const analysis::ModelComparison& c,
            " using 1:4 with lines lw 2 title 'dR/d{/Symbol d} from R_{energy}', " + f +
            " using 1:5 with lines lw 2 dt 2 title 'Eq. 6 from Eq. 2 at {/Symbol d}_{root}'\n";
       if (run_gnuplot(out_dir, s))
-        summary["plots"].push_back("closed_loop_" + l.model + ".png");
+        report.plots.push_back("closed_loop_" + l.model + ".png");
     }
     w.close();
     block["closed_loop"] = rows;
   }
-  summary["compare"] = block;
+  report["compare"] = block;
 }
 
 } // namespace fiberbridge::app

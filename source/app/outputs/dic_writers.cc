@@ -52,7 +52,7 @@ void write_dic_frames(const std::string& out_dir, const DicStepOptions& o,
 }
 
 void plot_dic(const std::string& out_dir, const DicStepOptions& o, const DicOutcome& r,
-              Json& summary) {
+              ItemReport& report) {
   const auto& a = r.analysis;
   const auto picked = spread_used(a, 6);
   if (picked.empty())
@@ -78,7 +78,7 @@ void plot_dic(const std::string& out_dir, const DicStepOptions& o, const DicOutc
   p += fmt(o.dic.tip.threshold) + " with lines lw 2 dt 2 lc rgb 'black' title 'threshold " +
        fmt(100 * o.dic.tip.threshold) + " %'\n";
   if (run_gnuplot(out_dir, p))
-    summary["plots"].push_back("dic_strain_profiles.png");
+    report.plots.push_back("dic_strain_profiles.png");
 
   std::string c = gnuplot_png_preamble("dic_crack_and_root.png");
   c += "set termoption noenhanced\nset xlabel 'time (s)'\nset ylabel 'crack length a (mm)'\n"
@@ -86,7 +86,7 @@ void plot_dic(const std::string& out_dir, const DicStepOptions& o, const DicOutc
        "plot 'dic_record.csv' using 1:4:6 with yerrorlines pt 7 ps 0.4 title 'a (DIC, 1 sd)', "
        "'' using 1:5:7 axes x1y2 with yerrorlines pt 6 ps 0.4 title 'delta_root (extensometer)'\n";
   if (run_gnuplot(out_dir, c))
-    summary["plots"].push_back("dic_crack_and_root.png");
+    report.plots.push_back("dic_crack_and_root.png");
 
   // One frame's field: the last used one, read again (the analysis keeps no fields).
   const std::size_t last = picked.back();
@@ -118,7 +118,7 @@ void plot_dic(const std::string& out_dir, const DicStepOptions& o, const DicOutc
         " % rule)', $ext using 1:2 with linespoints pt 2 ps 2 lw 2 lc rgb 'green' title "
         "'extensometer'\n";
   if (run_gnuplot(out_dir, fp))
-    summary["plots"].push_back("dic_field.png");
+    report.plots.push_back("dic_field.png");
 }
 
 Json dic_summary(const DicStepOptions& o, const DicOutcome& r,

@@ -1,8 +1,8 @@
 #pragma once
 // Writers of the dic step (dic_step.h): tables, plots and the summary block, apart from the step
 // that computes (MOOSE's outputs apart from the objects that compute).
+#include "fiberbridge/app/scene/item_outcome.h"
 #include "fiberbridge/app/scene/step_outcomes.h"
-#include "fiberbridge/core/summary.h"
 
 namespace fiberbridge::app {
 
@@ -13,9 +13,9 @@ void write_dic_frames(const std::string& out_dir, const DicStepOptions& o,
 /// dic_profiles.csv and dic_strain_profiles.png (paper Fig. 2): the crack-plane strain at up to
 /// six times with the threshold line; dic_crack_and_root.png: a(t) and delta_root(t);
 /// dic_field.csv and dic_field.png: the last used frame's strain field with the tip and the
-/// extensometer's points. Plots are added to summary["plots"].
+/// extensometer's points. Plots are added to the report's plots.
 void plot_dic(const std::string& out_dir, const DicStepOptions& o, const DicOutcome& r,
-              Json& summary);
+              ItemReport& report);
 /// summary["dic"]: frames read and used, points used and failed, the tip rule, the extensometer,
 /// the clock, the notes per frame, wall_time_s.
 Json dic_summary(const DicStepOptions& o, const DicOutcome& r,

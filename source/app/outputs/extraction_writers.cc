@@ -25,7 +25,7 @@ void write_law_csv(const std::string& path, const std::vector<double>& delta,
 } // namespace
 
 void write_extraction(const analysis::ExtractionOutcome& e, const analysis::ExtractionOptions& o,
-                      const std::string& out_dir, Json& summary) {
+                      const std::string& out_dir, ItemReport& report) {
 
   {
     CsvWriter w(out_dir + "/rdelta_averaged.csv", {"delta_mm", "R_J_m2", "R_std_J_m2"},
@@ -44,27 +44,27 @@ void write_extraction(const analysis::ExtractionOutcome& e, const analysis::Extr
   const double peak_eq6 = *std::max_element(e.laws.sigma_eq6.begin(), e.laws.sigma_eq6.end());
   const double peak_dRdd = *std::max_element(e.laws.sigma_dRdd.begin(), e.laws.sigma_dRdd.end());
   const double G_B = e.steady.G_ss - e.steady.j_tip;
-  summary["J_tip_J_m2"] = json_number(e.steady.j_tip);
-  summary["G_ss_J_m2"] = json_number(e.steady.G_ss);
-  summary["delta_c_mm"] = json_number(e.steady.delta_c / mm);
-  summary["peak_sigma_eq5_kPa"] = json_number(peak_eq6 / kPa);
-  summary["peak_sigma_dRdd_kPa"] = json_number(peak_dRdd / kPa);
-  summary["extract"] = {{"data_file", o.data_file},
-                        {"replicates", e.curve.n_replicates},
-                        {"averaging", e.curve.report},
-                        {"steady_state_criterion", e.steady.criterion},
-                        {"delta_c_automatic", e.steady.delta_c_automatic},
-                        {"J_tip_automatic", e.steady.j_tip_automatic},
-                        {"intervals_n", o.intervals},
-                        {"smoothing_half_width_k", o.half_width},
-                        {"G_B_J_m2", json_number(G_B)},
-                        {"area_eq5_J_m2", json_number(e.laws.area_eq6)},
-                        {"area_dRdd_J_m2", json_number(e.laws.area_dRdd)},
-                        {"peak_ratio_eq5_over_dRdd", json_number(peak_eq6 / peak_dRdd)}};
+  report["J_tip_J_m2"] = json_number(e.steady.j_tip);
+  report["G_ss_J_m2"] = json_number(e.steady.G_ss);
+  report["delta_c_mm"] = json_number(e.steady.delta_c / mm);
+  report["peak_sigma_eq5_kPa"] = json_number(peak_eq6 / kPa);
+  report["peak_sigma_dRdd_kPa"] = json_number(peak_dRdd / kPa);
+  report["extract"] = {{"data_file", o.data_file},
+                       {"replicates", e.curve.n_replicates},
+                       {"averaging", e.curve.report},
+                       {"steady_state_criterion", e.steady.criterion},
+                       {"delta_c_automatic", e.steady.delta_c_automatic},
+                       {"J_tip_automatic", e.steady.j_tip_automatic},
+                       {"intervals_n", o.intervals},
+                       {"smoothing_half_width_k", o.half_width},
+                       {"G_B_J_m2", json_number(G_B)},
+                       {"area_eq5_J_m2", json_number(e.laws.area_eq6)},
+                       {"area_dRdd_J_m2", json_number(e.laws.area_dRdd)},
+                       {"peak_ratio_eq5_over_dRdd", json_number(peak_eq6 / peak_dRdd)}};
 }
 
 void write_trilinear_fit(const analysis::TrilinearFit& fit, const std::string& out_dir,
-                         Json& summary) {
+                         ItemReport& report) {
   const auto& t = fit.law;
   {
     CsvWriter w(out_dir + "/trilinear_fit.csv", {"delta_mm", "sigma_kPa"},
@@ -78,20 +78,20 @@ void write_trilinear_fit(const analysis::TrilinearFit& fit, const std::string& o
     w.row({t.dc / mm, 0.0});
     w.close();
   }
-  summary["trilinear"] = {{"delta1_mm", t.d1 / mm},
-                          {"sigma1_kPa", t.s1 / kPa},
-                          {"delta2_mm", t.d2 / mm},
-                          {"sigma2_kPa", t.s2 / kPa},
-                          {"delta_c_mm", t.dc / mm},
-                          {"J1_J_m2", t.j1()},
-                          {"J2_J_m2", t.j2()},
-                          {"rms_residual_kPa", fit.rms_residual / kPa},
-                          {"max_residual_kPa", fit.max_residual / kPa},
-                          {"breakpoints", fit.d1_d2_free ? "free (variable projection)" : "fixed"}};
+  report["trilinear"] = {{"delta1_mm", t.d1 / mm},
+                         {"sigma1_kPa", t.s1 / kPa},
+                         {"delta2_mm", t.d2 / mm},
+                         {"sigma2_kPa", t.s2 / kPa},
+                         {"delta_c_mm", t.dc / mm},
+                         {"J1_J_m2", t.j1()},
+                         {"J2_J_m2", t.j2()},
+                         {"rms_residual_kPa", fit.rms_residual / kPa},
+                         {"max_residual_kPa", fit.max_residual / kPa},
+                         {"breakpoints", fit.d1_d2_free ? "free (variable projection)" : "fixed"}};
 }
 
 void plot_extraction(const analysis::ExtractionOutcome& e, const analysis::TrilinearFit* fit,
-                     const std::string& out_dir, Json& summary) {
+                     const std::string& out_dir, ItemReport& report) {
   // Forward R(delta) of the fitted law (Eq. 2) beside the data: the check a person looks at first.
   if (fit) {
     const auto law = law::make_trilinear(fit->law);
@@ -124,7 +124,7 @@ void plot_extraction(const analysis::ExtractionOutcome& e, const analysis::Trili
   if (run_gnuplot(out_dir, s))
     pngs.push_back("cohesive_law.png");
   for (const auto& p : pngs)
-    summary["plots"].push_back(p);
+    report.plots.push_back(p);
 }
 
 } // namespace fiberbridge::app

@@ -67,7 +67,8 @@ Json identification_json(const identify::Identification& id) {
   return j;
 }
 
-void write_identification(SceneContext& ctx, const identify::Identification& id) {
+void write_identification(const SceneContext& ctx, const identify::Identification& id,
+                          ItemReport& report) {
   {
     CsvWriter w(ctx.out("identify_fit.csv"),
                 {"record", "opening_mm", "load_N", "model_load_N", "a_mm", "model_a_mm"},
@@ -108,7 +109,7 @@ void write_identification(SceneContext& ctx, const identify::Identification& id)
   const std::string head = "set datafile separator ','\nset key autotitle columnhead\n";
   auto plot = [&](const std::string& png, const std::string& body) {
     if (run_gnuplot(ctx.output_dir, gnuplot_png_preamble(png) + head + body))
-      ctx.summary["plots"].push_back(png);
+      report.plots.push_back(png);
   };
   // Headroom above the highest load of any record (gnuplot's autoscale stops at the next tic and
   // cut DCB-01's peak at 100 N), the key top right, away from the rising branches.
@@ -154,8 +155,9 @@ Json identify_summary(const std::vector<identify::Identification>& fits,
   return block;
 }
 
-void write_identified_against_simulations(SceneContext& ctx, const identify::RecordFit& rec,
-                                          const std::vector<SimulationAgainstRecord>& checks) {
+void write_identified_against_simulations(const SceneContext& ctx, const identify::RecordFit& rec,
+                                          const std::vector<SimulationAgainstRecord>& checks,
+                                          ItemReport& report) {
   Json block = Json::object();
   std::string plot = "plot 'identify_fit_0.csv' using 1:2 with points pt 7 ps 0.4 title '" +
                      title_of(rec.name) + " measured'";
@@ -175,7 +177,7 @@ void write_identified_against_simulations(SceneContext& ctx, const identify::Rec
                    {"final_a_mm", c.final_a / mm}};
     plot += ", '" + file + "' using 1:3 with lines lw 2 title '" + name + "'";
   }
-  ctx.summary["identify_check"] = block;
+  report["identify_check"] = block;
   // The simulations' R(a) beside the record's measured R(a) when `reduce` ran in this scene.
   if (std::filesystem::exists(ctx.out("rcurve_test.csv"))) {
     std::string r_plot = "plot 'rcurve_test.csv' using 2:(strcol(1) eq '" + rec.name +
@@ -192,7 +194,7 @@ void write_identified_against_simulations(SceneContext& ctx, const identify::Rec
                         "simulations against the measured R(a)'\nset xlabel 'crack length a "
                         "(mm)'\nset ylabel 'R (J/m^2)'\nset key bottom right\n" +
                         r_plot + "\n"))
-      ctx.summary["plots"].push_back("identify_check_R_a.png");
+      report.plots.push_back("identify_check_R_a.png");
   }
   if (run_gnuplot(ctx.output_dir,
                   gnuplot_png_preamble("identify_check_load.png") +
@@ -200,7 +202,7 @@ void write_identified_against_simulations(SceneContext& ctx, const identify::Rec
                       "simulations against the record'\nset xlabel 'load-line opening (mm)'\n"
                       "set ylabel 'load (N)'\n" +
                       plot + "\n"))
-    ctx.summary["plots"].push_back("identify_check_load.png");
+    report.plots.push_back("identify_check_load.png");
 }
 
 } // namespace fiberbridge::app

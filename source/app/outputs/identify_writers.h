@@ -23,7 +23,8 @@ Json identify_summary(const std::vector<identify::Identification>& fits,
                       const std::vector<analysis::TestRecord>& records);
 
 /// identify_fit.csv, identify_law.csv, identify_fit_<k>.csv and the three PNGs.
-void write_identification(SceneContext& ctx, const identify::Identification& id);
+void write_identification(const SceneContext& ctx, const identify::Identification& id,
+                          ItemReport& report);
 
 /// A simulation with the identified law at the record's openings.
 struct SimulationAgainstRecord {
@@ -36,7 +37,8 @@ struct SimulationAgainstRecord {
 
 /// identify_check_<model>.csv, summary["identify_check"], identify_check_load.png and, when
 /// reduce wrote rcurve_test.csv, identify_check_R_a.png.
-void write_identified_against_simulations(SceneContext& ctx, const identify::RecordFit& rec,
-                                          const std::vector<SimulationAgainstRecord>& checks);
+void write_identified_against_simulations(const SceneContext& ctx, const identify::RecordFit& rec,
+                                          const std::vector<SimulationAgainstRecord>& checks,
+                                          ItemReport& report);
 
 } // namespace fiberbridge::app

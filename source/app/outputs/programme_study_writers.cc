@@ -88,7 +88,7 @@ bool plot_laws(const SceneContext& ctx, const ProgrammeOutcome& o, const std::st
 
 } // namespace
 
-void write_programme_study(SceneContext& ctx, const ProgrammeOutcome& o) {
+void write_programme_study(const SceneContext& ctx, const ProgrammeOutcome& o, ItemReport& report) {
   CsvWriter w(ctx.out("programme_recovery.csv"),
               {"material",
                "cycles",
@@ -174,13 +174,13 @@ void write_programme_study(SceneContext& ctx, const ProgrammeOutcome& o) {
                 {"ranking", o.ranking},
                 {"expected_ranking", o.expected_ranking},
                 {"ranking_as_seed", ranked == o.expected_ranking}};
-  ctx.summary["programme_study"] = block;
+  report["programme_study"] = block;
   if (o.refusal.empty()) {
     if (plot_recovered_vs_true(ctx, o))
-      ctx.summary["plots"].push_back("programme_sigma_recovered_vs_true.png");
+      report.plots.push_back("programme_sigma_recovered_vs_true.png");
     for (const auto& m : materials)
       if (plot_laws(ctx, o, m))
-        ctx.summary["plots"].push_back("programme_laws_" + m + ".png");
+        report.plots.push_back("programme_laws_" + m + ".png");
   }
 }
 

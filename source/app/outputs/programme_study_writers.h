@@ -32,6 +32,6 @@ struct ProgrammeOutcome {
 
 /// programme_recovery.csv, programme_sigma_recovered_vs_true.png, programme_laws_<material>.png
 /// and the summary block `programme_study`.
-void write_programme_study(SceneContext& ctx, const ProgrammeOutcome& o);
+void write_programme_study(const SceneContext& ctx, const ProgrammeOutcome& o, ItemReport& report);
 
 } // namespace fiberbridge::app

@@ -10,7 +10,7 @@
 namespace fiberbridge::app {
 
 void write_ranking(const analysis::RankingOutcome& r, const analysis::RankOptions& o,
-                   const std::string& out_dir, Json& summary) {
+                   const std::string& out_dir, ItemReport& report) {
   const auto& table = r.table;
   const auto& rows = r.rows;
   const auto& ranks = r.ranks;
@@ -52,14 +52,14 @@ void write_ranking(const analysis::RankingOutcome& r, const analysis::RankOption
     std::cerr << "warning: " << o.table_file << ": " << i.material << " at " << i.cycles
               << " cycles: " << i.message << "\n";
   }
-  summary["ranking"] = ranking;
-  summary["rank"] = {{"table_file", o.table_file},
-                     {"rule", "a property degrades when its least-squares slope vs cycles is "
-                              "negative with R^2 >= 0.8; materials ranked by the sum of "
-                              "significant slope/intercept rates, most durable first"},
-                     {"materials", ranking_detail},
-                     {"degradation", deg},
-                     {"consistency", cons}};
+  report["ranking"] = ranking;
+  report["rank"] = {{"table_file", o.table_file},
+                    {"rule", "a property degrades when its least-squares slope vs cycles is "
+                             "negative with R^2 >= 0.8; materials ranked by the sum of "
+                             "significant slope/intercept rates, most durable first"},
+                    {"materials", ranking_detail},
+                    {"degradation", deg},
+                    {"consistency", cons}};
   // One PNG per material: each property normalized by its fitted intercept against cycles.
   std::set<std::string> materials;
   for (const auto& r : rows)
@@ -95,7 +95,7 @@ void write_ranking(const analysis::RankingOutcome& r, const analysis::RankOption
            " with linespoints lw 2 title '" + props[p] + "'";
     s += "\n";
     if (run_gnuplot(out_dir, s))
-      summary["plots"].push_back("degradation_" + mat + ".png");
+      report.plots.push_back("degradation_" + mat + ".png");
   }
 }
 

@@ -169,7 +169,7 @@ void write_reduce_tables(const ReduceOutcome& r, const std::string& out_dir) {
   }
 }
 
-void plot_reduce(const ReduceOutcome& r, const std::string& out_dir, Json& summary) {
+void plot_reduce(const ReduceOutcome& r, const std::string& out_dir, ItemReport& report) {
   // The load axis ends 10 % above the largest load of any record: gnuplot's autoscale ends at
   // the next tick, which for DCB-01's 99.8 N peak is 100 N, and drew the peak on the frame.
   double peak = 0;
@@ -196,9 +196,9 @@ void plot_reduce(const ReduceOutcome& r, const std::string& out_dir, Json& summa
          lc + " title '" + r.records[k].name + "'";
   }
   if (run_gnuplot(out_dir, p + "\n"))
-    summary["plots"].push_back("reduce_load_opening.png");
+    report.plots.push_back("reduce_load_opening.png");
   if (run_gnuplot(out_dir, a + "\n"))
-    summary["plots"].push_back("reduce_crack_opening.png");
+    report.plots.push_back("reduce_crack_opening.png");
   // R_CBBM's column in rcurve_test.csv (write_reduce_tables): after the 9 fixed ones, delta_root's
   // two when measured, equivalent_crack and a_eq_mm.
   const int cbbm_column = 9 + (r.reduced.front().delta_root.empty() ? 0 : 2) + 3;
@@ -216,7 +216,7 @@ void plot_reduce(const ReduceOutcome& r, const std::string& out_dir, Json& summa
          "using 2:(sel(9)) with lines lc 4 dt 2 title 'MCC', '' using 2:(sel(" +
          std::to_string(cbbm_column) + ")) with lines lc 5 dt 3 title 'CBBM'\n";
     if (run_gnuplot(out_dir, s))
-      summary["plots"].push_back(png);
+      report.plots.push_back(png);
   }
 }
 

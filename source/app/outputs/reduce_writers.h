@@ -2,8 +2,8 @@
 // The files, plots and summary block of the reduce step (reduce_step.h), apart from its
 // computing (docs/design.md section 4, "Parse once and writers apart"): run_reduce reads and
 // reduces, then hands its outcome to these.
+#include "fiberbridge/app/scene/item_outcome.h"
 #include "fiberbridge/app/scene/step_outcomes.h"
-#include "fiberbridge/core/summary.h"
 
 #include <string>
 
@@ -22,7 +22,7 @@ Json reduce_summary(const ReduceStepOptions& o, const ReduceOutcome& r, bool any
                     bool all_root);
 
 /// reduce_load_opening.png, reduce_crack_opening.png and reduce_R_<name>.png (listed in
-/// summary["plots"] when gnuplot made them).
-void plot_reduce(const ReduceOutcome& r, const std::string& out_dir, Json& summary);
+/// the report's plots when gnuplot made them).
+void plot_reduce(const ReduceOutcome& r, const std::string& out_dir, ItemReport& report);
 
 } // namespace fiberbridge::app

@@ -6,7 +6,9 @@
 
 namespace fiberbridge::app {
 
-void report_simulation(SceneContext& ctx, result::SimulationResult r, const std::string& size_key) {
+ItemOutcome report_simulation(const SceneContext& ctx, result::SimulationResult r,
+                              const std::string& size_key) {
+  ItemOutcome outcome;
   const CrackLaw& crack_law = ctx.crack_law();
   const auto law = crack_law.law;
   const double j_tip = crack_law.j_tip;
@@ -38,7 +40,7 @@ void report_simulation(SceneContext& ctx, result::SimulationResult r, const std:
     block["peak_load_N"] = peak_load;
     block["final_crack_length_mm"] = json_number(r.rcurve.back().a / units::mm);
   }
-  ctx.summary[r.model] = block;
+  outcome.report[r.model] = block;
 
   std::string s = gnuplot_png_preamble("rcurve_" + r.model + ".png");
   s += "set title '" + r.model +
@@ -49,8 +51,9 @@ void report_simulation(SceneContext& ctx, result::SimulationResult r, const std:
        "' using 1:5 with lines lw 2 dt 2 title 'Eq. 2 at {/Symbol d}_{root}', " +
        std::to_string(G_ss_law) + " with lines dt 3 title 'J_{tip} + J_c'\n";
   if (run_gnuplot(ctx.output_dir, s))
-    ctx.summary["plots"].push_back("rcurve_" + r.model + ".png");
-  ctx.results[r.model] = std::move(r);
+    outcome.report.plots.push_back("rcurve_" + r.model + ".png");
+  outcome.simulation = std::move(r);
+  return outcome;
 }
 
 } // namespace fiberbridge::app

@@ -6,8 +6,8 @@
 
 namespace fiberbridge::app {
 
-void write_study_ladders(SceneContext& ctx, const std::vector<LadderOutcome>& ladders,
-                         Json& block) {
+void write_study_ladders(const SceneContext& ctx, const std::vector<LadderOutcome>& ladders,
+                         Json& block, ItemReport& report) {
   CsvWriter w(ctx.out("study_error_vs_time.csv"),
               {"model", "level", "n_dofs_or_particles", "wall_time_s", "rdelta_rel_error",
                "G_ss_rel_error"},
@@ -67,11 +67,11 @@ void write_study_ladders(SceneContext& ctx, const std::vector<LadderOutcome>& la
   w.close();
   plot += "\n";
   if (run_gnuplot(ctx.output_dir, plot))
-    ctx.summary["plots"].push_back("study_error_vs_time.png");
+    report.plots.push_back("study_error_vs_time.png");
   block["error_vs_time"] = rows;
 }
 
-void write_study_stability(SceneContext& ctx, const std::vector<Json>& rows, Json& block) {
+void write_study_stability(const SceneContext& ctx, const std::vector<Json>& rows, Json& block) {
   CsvWriter w(ctx.out("stability.csv"), {"case", "model", "outcome", "diagnosis", "wall_time_s"},
               {"outcome: converged (plateau within the tolerance of J_tip + area) | diagnosed "
                "stop (the model said why it stopped) | suspect | failure"});

@@ -35,10 +35,11 @@ struct LadderOutcome {
 
 /// study_error_vs_time.csv, study_<model>.csv, study_error_vs_time.png, and in `block` the law's
 /// and specimen's sources, cheapest (per model) and error_vs_time.
-void write_study_ladders(SceneContext& ctx, const std::vector<LadderOutcome>& ladders, Json& block);
+void write_study_ladders(const SceneContext& ctx, const std::vector<LadderOutcome>& ladders,
+                         Json& block, ItemReport& report);
 
 /// stability.csv and block["stability"] from the cases' rows (case, description, model,
 /// outcome, diagnosis, wall_time_s, steady_state_status, rank, cpu_s).
-void write_study_stability(SceneContext& ctx, const std::vector<Json>& rows, Json& block);
+void write_study_stability(const SceneContext& ctx, const std::vector<Json>& rows, Json& block);
 
 } // namespace fiberbridge::app

@@ -124,7 +124,8 @@ void BinaryCodec<identify::Identification>::load(BinaryReader& in, identify::Ide
 
 namespace fiberbridge::app {
 
-Fingerprint identify_inputs(SceneContext& ctx, const std::vector<analysis::TestRecord>& records) {
+Fingerprint identify_inputs(const SceneContext& ctx,
+                            const std::vector<analysis::TestRecord>& records) {
   Fingerprint fp = scene_fingerprint(ctx.parameters());
   for (std::size_t k = 0; k < records.size(); ++k) {
     const auto& r = records[k];

@@ -1,5 +1,7 @@
 #include "fiberbridge/app/run/resume_store.h"
 
+#include "fiberbridge/app/run/outcome_archive.h"
+
 #include "fiberbridge/app/scene/models.h"
 #include "fiberbridge/app/scene/scene_reader.h"
 #include "fiberbridge/core/binary_archive.h"
@@ -9,7 +11,6 @@
 #include "fiberbridge/core/json_archive.h"
 #include "fiberbridge/core/output_guard.h"
 #include "fiberbridge/law/law_fingerprint.h"
-#include "fiberbridge/result/result_archive.h"
 
 #include <filesystem>
 #include <fstream>
@@ -40,33 +41,7 @@ std::string record_path(const std::string& output_dir, std::string unit,
   return resume_directory(output_dir) + "/" + unit + extension;
 }
 
-/// What a simulation item leaves in the scene: its summary blocks, the plots it added, and its
-/// result.
-struct SimulationItemRecord {
-  Json blocks = Json::object();
-  Json plots = Json::array();
-  result::SimulationResult result;
-};
-
 } // namespace
-} // namespace fiberbridge::app
-
-template <>
-struct fiberbridge::BinaryCodec<fiberbridge::app::SimulationItemRecord> {
-  static void save(BinaryWriter& out, const app::SimulationItemRecord& r) {
-    out.put(r.blocks);
-    out.put(r.plots);
-    out.put(r.result);
-  }
-  static void load(BinaryReader& in, app::SimulationItemRecord& r) {
-    in.get(r.blocks);
-    in.get(r.plots);
-    in.get(r.result);
-  }
-};
-
-namespace fiberbridge::app {
-namespace {} // namespace
 
 Fingerprint scene_fingerprint(const SceneParameters& parameters) {
   Fingerprint fp;
@@ -76,7 +51,7 @@ Fingerprint scene_fingerprint(const SceneParameters& parameters) {
   return fp;
 }
 
-Fingerprint simulation_fingerprint(SceneContext& ctx) {
+Fingerprint simulation_fingerprint(const SceneContext& ctx) {
   Fingerprint fp = scene_fingerprint(ctx.parameters());
   // What earlier items hand on. A scene whose own law or specimen is unusable may still run a
   // study of cases that override them: the fingerprint then records the reason.
@@ -217,34 +192,18 @@ bool is_simulation_item(const std::string& item) {
   return built_model(item) != nullptr;
 }
 
-void run_or_restore_simulation_item(SceneContext& ctx, const SceneItem& item) {
+ItemOutcome run_or_restore_simulation_item(const SceneContext& ctx, const SceneItem& item) {
   const std::string unit = "item_" + item.name;
   const Fingerprint inputs = simulation_fingerprint(ctx);
-  if (auto kept =
-          find_finished_unit<SimulationItemRecord>(ctx.output_dir, ctx.resume, unit, inputs)) {
-    for (const auto& [key, block] : kept->blocks.items())
-      ctx.summary[key] = block;
-    for (const auto& p : kept->plots)
-      ctx.summary["plots"].push_back(p);
-    ctx.results[item.name] = std::move(kept->result);
-    return;
-  }
-  const Json before = ctx.summary;
-  item.run(ctx);
-  // What the item left in the summary: its blocks, and the plots it added.
-  SimulationItemRecord record;
-  for (const auto& [key, block] : ctx.summary.items())
-    if (key != "plots" && (!before.contains(key) || before[key] != block))
-      record.blocks[key] = block;
-  const std::size_t n_before = before.contains("plots") ? before["plots"].size() : 0;
-  for (std::size_t i = n_before; i < ctx.summary["plots"].size(); ++i)
-    record.plots.push_back(ctx.summary["plots"][i]);
-  record.result = ctx.results.at(item.name);
-  keep_finished_unit(ctx.output_dir, unit, inputs, record);
+  if (auto kept = find_finished_unit<ItemOutcome>(ctx.output_dir, ctx.resume, unit, inputs))
+    return std::move(*kept);
+  ItemOutcome outcome = item.run(ctx);
+  keep_finished_unit(ctx.output_dir, unit, inputs, outcome);
   if (output_enabled()) {
     std::error_code ec;
     std::filesystem::remove(resume_directory(ctx.output_dir) + "/" + item.name + "_state.bin", ec);
   }
+  return outcome;
 }
 
 } // namespace fiberbridge::app

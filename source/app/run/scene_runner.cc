@@ -19,6 +19,28 @@
 
 namespace fiberbridge::app {
 
+void merge_outcome(SceneContext& ctx, const std::string& item, ItemOutcome outcome) {
+  if (outcome.records)
+    ctx.records = std::move(outcome.records);
+  if (outcome.reduced)
+    ctx.reduced = std::move(outcome.reduced);
+  if (outcome.rdelta_root)
+    ctx.rdelta_root = std::move(outcome.rdelta_root);
+  if (outcome.extraction)
+    ctx.extraction = std::move(outcome.extraction);
+  if (outcome.identification)
+    ctx.identification = std::move(outcome.identification);
+  if (outcome.law)
+    ctx.handed_law = std::move(outcome.law);
+  if (outcome.specimen)
+    ctx.handed_specimen = std::move(outcome.specimen);
+  if (outcome.records_from_dic)
+    ctx.records_from_dic = std::move(*outcome.records_from_dic);
+  if (outcome.simulation)
+    ctx.results[item] = std::move(*outcome.simulation);
+  add_report_to_summary(outcome.report, ctx.summary);
+}
+
 void check_scene(SceneContext& ctx) {
   for (const auto& item : scene_items())
     if (ctx.run_items.count(item.name))
@@ -61,10 +83,9 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
       std::cerr << "fiberbridge: running " << item.name << "\n";
     const auto ti = std::chrono::steady_clock::now();
     // A simulation is a unit of work that --resume restores once finished (resume_store.h).
-    if (is_simulation_item(item.name))
-      run_or_restore_simulation_item(ctx, item);
-    else
-      item.run(ctx);
+    merge_outcome(ctx, item.name,
+                  is_simulation_item(item.name) ? run_or_restore_simulation_item(ctx, item)
+                                                : item.run(ctx));
     ctx.summary["item_wall_time_s"][item.name] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - ti).count();
   }

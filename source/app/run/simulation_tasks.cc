@@ -1,11 +1,11 @@
 #include "fiberbridge/app/run/simulation_tasks.h"
 
+#include "fiberbridge/app/run/outcome_archive.h"
 #include "fiberbridge/app/run/resume_store.h"
+#include "fiberbridge/app/run/scene_runner.h"
 #include "fiberbridge/app/run/task_distributor.h"
 #include "fiberbridge/app/scene/models.h"
-#include "fiberbridge/core/json_archive.h"
 #include "fiberbridge/core/output_guard.h"
-#include "fiberbridge/result/result_archive.h"
 
 #include <chrono>
 #include <functional>
@@ -13,40 +13,10 @@
 #include <vector>
 
 namespace fiberbridge::app {
-
 namespace {
 
-/// What a simulation task hands back to rank 0: the item's summary block, the plots it made, its
-/// result and how long it took.
-struct SimulationTaskOutput {
-  Json block;
-  Json plots = Json::array();
-  result::SimulationResult result;
-  double wall_time_s = 0;
-};
-
-} // namespace
-} // namespace fiberbridge::app
-
-template <>
-struct fiberbridge::BinaryCodec<fiberbridge::app::SimulationTaskOutput> {
-  static void save(BinaryWriter& out, const app::SimulationTaskOutput& t) {
-    out.put(t.block);
-    out.put(t.plots);
-    out.put(t.result);
-    out.put(t.wall_time_s);
-  }
-  static void load(BinaryReader& in, app::SimulationTaskOutput& t) {
-    in.get(t.block);
-    in.get(t.plots);
-    in.get(t.result);
-    in.get(t.wall_time_s);
-  }
-};
-
-namespace fiberbridge::app {
-namespace {
-
+/// A task's bytes: the item's outcome (outcome_archive.h, the record --resume keeps) and how long
+/// the task took.
 const char* task_output_kind = "fiberbridge simulation task";
 
 /// Relative cost, only to order the hand-out (the slowest model starts first); 0 for the items
@@ -82,28 +52,26 @@ Json run_simulations(SceneContext& ctx, const std::set<std::string>& wanted, MPI
       sims.size(),
       [&](std::size_t i) {
         const SceneItem& item = *sims[i];
-        SceneContext sub = ctx; // the parameters, the fitted law; the task's own summary
-        sub.summary = {{"plots", Json::array()}};
-        sub.results.clear();
         TaskOwnsItsFiles own; // its model's files only: rcurve_<model>.csv, fields, PNG
         const auto t0 = std::chrono::steady_clock::now();
-        run_or_restore_simulation_item(sub, item);
+        const ItemOutcome outcome = run_or_restore_simulation_item(ctx, item);
         const double t =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        return to_archive_bytes(SimulationTaskOutput{sub.summary[item.name], sub.summary["plots"],
-                                                     sub.results.at(item.name), t},
-                                task_output_kind);
+        BinaryWriter out(task_output_kind, 1);
+        out.put(outcome);
+        out.put(t);
+        return out.finish();
       },
       comm, cost);
   // Back into the scene in item order, as a serial run would have left them.
   for (std::size_t i = 0; i < sims.size(); ++i) {
     const std::string& name = sims[i]->name;
-    auto r = from_archive_bytes<SimulationTaskOutput>(done.output[i], task_output_kind);
-    ctx.summary[name] = std::move(r.block);
-    for (const auto& p : r.plots)
-      ctx.summary["plots"].push_back(p);
-    ctx.results[name] = std::move(r.result);
-    ctx.summary["item_wall_time_s"][name] = r.wall_time_s;
+    BinaryReader in(done.output[i], task_output_kind, 1, "simulation task " + name);
+    ItemOutcome outcome = in.get<ItemOutcome>();
+    const double wall_time_s = in.get<double>();
+    in.expect_end();
+    merge_outcome(ctx, name, std::move(outcome));
+    ctx.summary["item_wall_time_s"][name] = wall_time_s;
     block["items"].push_back({{"item", name}, {"rank", done.rank[i]}});
   }
   return block;

@@ -22,13 +22,13 @@ const char* specimen_source_name(SpecimenSource source) {
   return source == SpecimenSource::identify ? "identify" : "Specimen and Material sections";
 }
 
-const law::TractionLaw* SceneContext::law_known_before_run() {
+const law::TractionLaw* SceneContext::law_known_before_run() const {
   if (handed_law || run_items.count("fit") || run_items.count("identify"))
     return nullptr;
   return law().get();
 }
 
-const CrackLaw& SceneContext::crack_law() {
+const CrackLaw& SceneContext::crack_law() const {
   if (handed_law)
     return *handed_law;
   if (!section_law_) {

@@ -191,6 +191,17 @@ read_scene_parameters(const std::string& prm_file, const std::vector<std::string
 }
 
 std::shared_ptr<const SceneParameters>
+read_scene_parameters_from_settings(const std::string& where,
+                                    const std::vector<std::string>& settings) {
+  dealii::ParameterHandler prm;
+  declare_everything(prm);
+  auto run = apply_settings_and_check_run(prm, where, settings);
+  auto p = parse_scene(prm, where, settings, std::move(run));
+  std::const_pointer_cast<SceneParameters>(p)->from_file = false;
+  return p;
+}
+
+std::shared_ptr<const SceneParameters>
 scene_parameters_with(const SceneParameters& scene, const std::vector<std::string>& settings,
                       const std::string& where) {
   // ParameterHandler cannot be copied, and its JSON and XML listings do not read back in deal.II
@@ -198,10 +209,18 @@ scene_parameters_with(const SceneParameters& scene, const std::vector<std::strin
   // --set, then the settings. Nothing wrote into the scene's parameters after that
   // (docs/design.md section 4), so the copy holds the same values but for the settings.
   dealii::ParameterHandler prm;
-  auto run = read_scene(prm, scene.scene_file, scene.overrides);
+  std::vector<std::string> run;
+  if (scene.from_file)
+    run = read_scene(prm, scene.scene_file, scene.overrides);
+  else {
+    declare_everything(prm);
+    run = apply_settings_and_check_run(prm, scene.scene_file, scene.overrides);
+  }
   for (const auto& s : settings)
     apply_setting(prm, s, where);
-  return parse_scene(prm, scene.scene_file, scene.overrides, std::move(run));
+  auto p = parse_scene(prm, scene.scene_file, scene.overrides, std::move(run));
+  std::const_pointer_cast<SceneParameters>(p)->from_file = scene.from_file;
+  return p;
 }
 
 std::string resolve_scene_path(const std::string& path, const std::string& scene_file) {
@@ -230,9 +249,16 @@ std::vector<std::string> read_scene(dealii::ParameterHandler& prm, const std::st
   } catch (const std::exception& e) {
     throw InputError(prm_file + ": " + condense(e.what()));
   }
+  return apply_settings_and_check_run(prm, prm_file, overrides, "--set");
+}
+
+std::vector<std::string> apply_settings_and_check_run(dealii::ParameterHandler& prm,
+                                                      const std::string& prm_file,
+                                                      const std::vector<std::string>& overrides,
+                                                      const std::string& where) {
   // --set "Section/Sub/Key=value": set() validates against the entry's pattern.
   for (const auto& o : overrides)
-    apply_setting(prm, o, "--set");
+    apply_setting(prm, o, where.empty() ? prm_file : where);
 
   const auto wanted = split_list(prm.get("Run"), ',');
   if (wanted.empty())

@@ -2,7 +2,7 @@
 // The analysis chain as steps shared by the command line (extract, rank) and the scene items
 // (extract, fit, rank, bridging): one implementation, two front ends.
 #include "fiberbridge/analysis/law_extraction.h"
-#include "fiberbridge/core/summary.h"
+#include "fiberbridge/app/scene/item_outcome.h"
 
 #include <memory>
 #include <string>
@@ -22,15 +22,15 @@ using analysis::RankOptions;
 /// docs/design.md section 5 to `summary` (J_tip_J_m2, G_ss_J_m2, delta_c_mm, peak_sigma_eq5_kPa,
 /// peak_sigma_dRdd_kPa, extract{}).
 ExtractionOutcome run_extraction(const ExtractionOptions& o, const std::string& out_dir,
-                                 Json& summary);
+                                 ItemReport& report);
 
 /// Trilinear fit of the Eq. 6 law with area G_ss - J_tip; writes trilinear_fit.csv and the
 /// summary's `trilinear` block (the plots: plot_extraction, outputs/extraction_writers.h).
 analysis::TrilinearFit run_trilinear_fit(const ExtractionOutcome& e, const FitOptions& o,
-                                         const std::string& out_dir, Json& summary);
+                                         const std::string& out_dir, ItemReport& report);
 
 /// Degradation statistics, ranking and consistency check; writes degradation.csv, ranking.csv,
 /// PNGs per material; adds `ranking`, `degradation`, `consistency` to summary.
-void run_ranking(const RankOptions& o, const std::string& out_dir, Json& summary);
+void run_ranking(const RankOptions& o, const std::string& out_dir, ItemReport& report);
 
 } // namespace fiberbridge::app

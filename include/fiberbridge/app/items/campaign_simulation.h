@@ -33,7 +33,7 @@ std::vector<std::string> campaign_simulation_models();
 /// Material and the model's section. Groups are independent; on N ranks they run as tasks
 /// (task_distributor.h). With ctx.resume, a group simulated by an earlier run into the same
 /// output directory is restored (campaign_resume.h); each is kept as it finishes.
-std::vector<GroupSimulation> simulate_campaign_laws(SceneContext& ctx,
+std::vector<GroupSimulation> simulate_campaign_laws(const SceneContext& ctx,
                                                     const analysis::CampaignResult& r,
                                                     const std::string& model);
 

@@ -3,8 +3,9 @@
 // DIC frames and the machine record in, dic_record.csv (the test record `reduce` reads), the
 // per-frame table, the plots and the summary block `dic` out (docs/design.md section 6,
 // "DIC frames in").
+#include "fiberbridge/app/scene/item_outcome.h"
+#include "fiberbridge/app/scene/scene_context.h"
 #include "fiberbridge/app/scene/step_outcomes.h"
-#include "fiberbridge/core/summary.h"
 #include "fiberbridge/dic/dic_analysis.h"
 #include "fiberbridge/dic/dic_record.h"
 
@@ -21,6 +22,10 @@ namespace fiberbridge::app {
 /// no time column or holds more than one record.
 dic::MachineRecord read_machine_record(const std::string& path, analysis::RecordReadOptions read);
 
+/// The DIC and Test sections as the scene's `dic` uses them (the frames, the machine record, the
+/// specimen's a0); every file must exist. Throws InputError naming the scene and key.
+DicStepOptions dic_step_options(const SceneContext& ctx);
+
 /// The frames analysed and matched by time to the machine record: what `dic` writes and what a
 /// campaign's DIC set reduces (one code for both doors).
 DicMatch match_dic_frames(const DicStepOptions& options);
@@ -30,6 +35,6 @@ std::vector<std::string> dic_record_comments(const DicStepOptions& options, cons
 
 /// Analyses the frames, matches them to the machine record, writes dic_record.csv, dic_frames.csv,
 /// dic_profiles.csv, dic_field.csv and the plots, and adds summary["dic"].
-DicOutcome run_dic(const DicStepOptions& options, const std::string& out_dir, Json& summary);
+DicOutcome run_dic(const DicStepOptions& options, const std::string& out_dir, ItemReport& report);
 
 } // namespace fiberbridge::app

@@ -13,11 +13,14 @@ namespace fiberbridge::app {
 void declare_identify_section(dealii::ParameterHandler& prm);
 void parse_identify_section(dealii::ParameterHandler& prm, SceneParameters& out);
 void check_identify_item(SceneContext& ctx);
-void run_identify_item(SceneContext& ctx);
-/// For compare: the identified law's simulations against the first record (identify_check).
-void check_identified_against_simulations(SceneContext& ctx);
+ItemOutcome run_identify_item(const SceneContext& ctx);
+/// For compare: the identified law's simulations against the first record (identify_check),
+/// added to compare's report.
+void check_identified_against_simulations(const SceneContext& ctx, ItemReport& report);
 /// After extract, when identify ran in the same scene (records with delta_root): the three
-/// routes to the law side by side (law_routes.csv, summary block law_routes, law_routes.png).
-void report_law_routes(SceneContext& ctx);
+/// routes to the law side by side (law_routes.csv, summary block law_routes, law_routes.png),
+/// added to extract's report.
+void report_law_routes(const ExtractionOutcome& e, const identify::Identification& id,
+                       const std::string& out_dir, ItemReport& report);
 
 } // namespace fiberbridge::app

@@ -2,8 +2,8 @@
 // The campaign's laws back in the specimen, written (the paper's Fig. 10): the simulated R(delta)
 // of each group beside its measured curve, and each group's simulation block in the summary.
 #include "fiberbridge/analysis/campaign_run.h"
+#include "fiberbridge/app/scene/item_outcome.h"
 #include "fiberbridge/app/scene/step_outcomes.h"
-#include "fiberbridge/core/summary.h"
 
 #include <string>
 #include <vector>
@@ -17,6 +17,6 @@ std::vector<std::string> write_campaign_simulation_files(const analysis::Campaig
                                                          const std::string& out_dir);
 /// campaign.groups[i].simulation in the summary (after write_campaign_outputs made the block).
 void add_campaign_simulation_summary(const analysis::CampaignResult& r,
-                                     const std::vector<GroupSimulation>& sims, Json& summary);
+                                     const std::vector<GroupSimulation>& sims, ItemReport& report);
 
 } // namespace fiberbridge::app

@@ -5,8 +5,8 @@
 // degradation and ranking tables, each group's law with its band and as LS-DYNA / Abaqus input,
 // gnuplot PNGs, campaign_report.html and the summary block `campaign`. Nothing is computed here.
 #include "fiberbridge/analysis/campaign_run.h"
+#include "fiberbridge/app/scene/item_outcome.h"
 #include "fiberbridge/app/scene/step_outcomes.h"
-#include "fiberbridge/core/summary.h"
 
 #include <string>
 
@@ -21,7 +21,11 @@ struct CampaignWriteOptions {
   std::vector<std::string> simulation_pngs;
 };
 
+/// summary.json's `campaign` block of `r` (the groups with their intervals, degradation, ranking
+/// and its confidence).
+Json campaign_summary_block(const analysis::CampaignResult& r, const CampaignWriteOptions& w);
+
 void write_campaign_outputs(const analysis::CampaignResult& r, const CampaignWriteOptions& w,
-                            const std::string& out_dir, Json& summary);
+                            const std::string& out_dir, ItemReport& report);
 
 } // namespace fiberbridge::app

@@ -1,7 +1,7 @@
 #pragma once
 // The files, plots and summary block of `compare` (analysis/model_comparison.h computes them).
 #include "fiberbridge/analysis/model_comparison.h"
-#include "fiberbridge/core/summary.h"
+#include "fiberbridge/app/scene/item_outcome.h"
 
 #include <string>
 #include <vector>
@@ -15,6 +15,6 @@ namespace fiberbridge::app {
 void write_comparison(const analysis::ModelComparison& c,
                       const std::vector<const result::SimulationResult*>& models,
                       const law::TractionLaw& law, double j_tip, const std::string& out_dir,
-                      Json& summary);
+                      ItemReport& report);
 
 } // namespace fiberbridge::app

@@ -1,7 +1,7 @@
 #pragma once
 // The files, plots and summary keys of extract and fit (analysis/law_extraction.h computes them).
 #include "fiberbridge/analysis/law_extraction.h"
-#include "fiberbridge/core/summary.h"
+#include "fiberbridge/app/scene/item_outcome.h"
 
 #include <string>
 
@@ -11,15 +11,15 @@ namespace fiberbridge::app {
 /// docs/design.md section 5 (J_tip_J_m2, G_ss_J_m2, delta_c_mm, peak_sigma_eq5_kPa,
 /// peak_sigma_dRdd_kPa) and the `extract` block.
 void write_extraction(const analysis::ExtractionOutcome& e, const analysis::ExtractionOptions& o,
-                      const std::string& out_dir, Json& summary);
+                      const std::string& out_dir, ItemReport& report);
 
 /// trilinear_fit.csv and the summary's `trilinear` block.
 void write_trilinear_fit(const analysis::TrilinearFit& fit, const std::string& out_dir,
-                         Json& summary);
+                         ItemReport& report);
 
 /// rdelta.png (the averaged R(delta), with the fitted law's Eq. 2 forward curve in
 /// rdelta_fit_forward.csv when `fit`) and cohesive_law.png (the Eq. 6 and R' laws, and the fit).
 void plot_extraction(const analysis::ExtractionOutcome& e, const analysis::TrilinearFit* fit,
-                     const std::string& out_dir, Json& summary);
+                     const std::string& out_dir, ItemReport& report);
 
 } // namespace fiberbridge::app

@@ -30,6 +30,7 @@ namespace fiberbridge::app {
 
 /// The scene's parameters and, per record, its name and a hash of its rows (a changed data file
 /// is a changed input even when the scene is not).
-Fingerprint identify_inputs(SceneContext& ctx, const std::vector<analysis::TestRecord>& records);
+Fingerprint identify_inputs(const SceneContext& ctx,
+                            const std::vector<analysis::TestRecord>& records);
 
 } // namespace fiberbridge::app

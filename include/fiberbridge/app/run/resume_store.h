@@ -28,7 +28,7 @@ Fingerprint scene_fingerprint(const SceneParameters& parameters);
 
 /// scene_fingerprint plus what a simulation takes from earlier items: the law (law_fingerprint)
 /// and J_tip, the specimen and the material in effect (identify and fit set them).
-Fingerprint simulation_fingerprint(SceneContext& ctx);
+Fingerprint simulation_fingerprint(const SceneContext& ctx);
 
 /// <output_dir>/resume
 std::string resume_directory(const std::string& output_dir);
@@ -92,11 +92,12 @@ std::string run_or_restore(const std::string& output_dir, bool resume, const std
                            const Fingerprint& inputs, const std::string& unit_dir,
                            const std::function<std::string()>& run);
 
-/// Simulation items (beam, fem, mpm) are units of a scene: runs `item` into ctx, or restores what
-/// it left there (its summary blocks, plots and result; its files are already in the directory)
-/// from the record of an earlier run. After a run keeps the record and removes the item's
-/// checkpoint (<output_dir>/resume/<item>_state.bin, the convention of the models' checkpoints).
-void run_or_restore_simulation_item(SceneContext& ctx, const SceneItem& item);
+/// Simulation items (beam, fem, mpm) are units of a scene: runs `item` and returns its outcome, or
+/// restores the outcome it returned (its summary blocks, plots and result; its files are already
+/// in the directory) from the record of an earlier run (outcome_archive.h). After a run keeps the
+/// record and removes the item's checkpoint (<output_dir>/resume/<item>_state.bin, the
+/// convention of the models' checkpoints).
+ItemOutcome run_or_restore_simulation_item(const SceneContext& ctx, const SceneItem& item);
 
 /// Is `item` a simulation item (a unit of run_or_restore_simulation_item)?
 bool is_simulation_item(const std::string& item);

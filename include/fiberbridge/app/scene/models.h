@@ -23,7 +23,7 @@ struct SimulationModel {
   /// Its section parsed into the scene's parameters when the scene is read (SceneItem::parse).
   void (*parse)(dealii::ParameterHandler&, SceneParameters&) = nullptr;
   void (*check)(SceneContext&) = nullptr;
-  void (*run)(SceneContext&) = nullptr;
+  ItemOutcome (*run)(const SceneContext&) = nullptr;
   /// Relative cost on the seed specimen (the beam ~0.2 s, the 2D FEM 0.18 s of model time on
   /// its defaults, the MPM minutes: README.md, "The models in one paragraph each";
   /// docs/verification.md, "The FEM at its physical limit"): orders the runs
@@ -43,12 +43,12 @@ struct SimulationModel {
   /// The model run with a given law and J_tip on the scene's specimen set-up and the model's
   /// section, on this process alone, writing no files and reporting nothing: for items that put
   /// many laws back in the specimen (the campaign's Fig. 10). nullptr when not built.
-  result::SimulationResult (*simulate)(SceneContext&, const law::TractionLaw&,
+  result::SimulationResult (*simulate)(const SceneContext&, const law::TractionLaw&,
                                        double j_tip) = nullptr;
   /// The model with its section's settings as identify's forward model (Identify/Forward model
   /// = <name>; identify/forward_model.h, docs/design.md section 6, "Forward model of identify").
   /// nullptr: not offered (the beam is identify's own, with the Identify section's beam keys).
-  identify::ForwardModel (*identify_forward)(SceneContext&) = nullptr;
+  identify::ForwardModel (*identify_forward)(const SceneContext&) = nullptr;
   /// identify's own forward model (the beam, run with the Identify section's beam keys), which
   /// identify calls itself rather than through identify_forward.
   bool identify_builtin = false;

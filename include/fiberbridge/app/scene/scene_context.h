@@ -1,13 +1,14 @@
 #pragma once
 // What a scene item (reduce, identify, extract, fit, rank, bridging, the simulations, compare,
-// study) sees of the scene: the parsed parameters, the output directory, the summary it adds its
-// block to, and what earlier items handed on as typed values (docs/design.md section 4, "A
-// scene's state"): the records and their reduction, R(delta_root), the extraction, the
-// identification, the crack law and the specimen set-up with their sources, the simulation
-// results.
+// study) sees of the scene: the parsed parameters, the output directory, and what earlier items
+// handed on as typed values (docs/design.md section 4, "A scene's state"): the records and their
+// reduction, R(delta_root), the extraction, the identification, the crack law and the specimen
+// set-up with their sources, the simulation results. An item returns what it made
+// (item_outcome.h); the scene runner merges it here.
 #include "fiberbridge/analysis/rdelta_data.h"
 #include "fiberbridge/analysis/record_chain.h"
 #include "fiberbridge/analysis/test_record.h"
+#include "fiberbridge/app/scene/item_outcome.h"
 #include "fiberbridge/app/scene/scene_parameters.h"
 #include "fiberbridge/core/summary.h"
 #include "fiberbridge/law/law_spec.h"
@@ -25,41 +26,8 @@
 namespace dealii {
 class ParameterHandler; // the scene reader's (scene_reader.cc): sections declare and parse with it
 }
-namespace fiberbridge::analysis {
-struct ExtractionOutcome; // analysis/law_extraction.h
-}
 namespace fiberbridge::app {
 using analysis::ExtractionOutcome;
-struct ReduceOutcome; // step_outcomes.h
-} // namespace fiberbridge::app
-namespace fiberbridge::identify {
-struct Identification; // identify/identify.h
-}
-namespace fiberbridge::app {
-
-/// Where the law a simulation uses comes from.
-enum class LawSource { section, fit, identify };
-/// The name summary.json gives a law source ("Cohesive law section", "fit", "identify").
-const char* law_source_name(LawSource source);
-
-/// A crack law with its crack-tip toughness and its source.
-struct CrackLaw {
-  law::TractionLawPtr law;
-  double j_tip = 0; ///< [J/m^2]
-  LawSource source = LawSource::section;
-};
-
-/// Where the specimen and material a simulation uses come from.
-enum class SpecimenSource { section, identify };
-/// "Specimen and Material sections" or "identify".
-const char* specimen_source_name(SpecimenSource source);
-
-/// The specimen and its material with their source.
-struct SpecimenSetup {
-  specimen::Specimen specimen;
-  specimen::Material material;
-  SpecimenSource source = SpecimenSource::section;
-};
 
 struct SceneContext {
   /// Every section of the scene, parsed once when it was read (scene_parameters.h); a study's
@@ -68,13 +36,16 @@ struct SceneContext {
   std::shared_ptr<const SceneParameters> params;
   const SceneParameters& parameters() const { return *params; }
   std::string output_dir;
+  /// summary.json as the run builds it: the scene runner adds each item's report
+  /// (merge_outcome, run/scene_runner.h); items never write here.
   Json summary = Json::object();
   std::string scene_file; ///< for resolving relative data paths
   /// `fiberbridge run --resume`: units of work finished by an earlier run into this output
   /// directory are restored and checkpoints continued (resume_store.h, mpm/checkpoint.h).
   bool resume = false;
 
-  // ---- what earlier items hand on (typed; nothing is written back into the parameters)
+  // ---- what earlier items hand on (typed; nothing is written back into the parameters). Set
+  // only by the scene runner, from the items' outcomes (item_outcome.h).
 
   /// The Test section's records as read, once: by `reduce` (which keeps them in its outcome) or,
   /// when reduce does not run, by `identify`'s check. identify fits these.
@@ -107,13 +78,13 @@ struct SceneContext {
   bool specimen_from_section() const { return !run_items.count("identify") && !handed_specimen; }
   /// The law when it is known before any item runs (the Cohesive law section, built and checked),
   /// nullptr when fit or identify will provide it.
-  const law::TractionLaw* law_known_before_run();
+  const law::TractionLaw* law_known_before_run() const;
 
   /// The law, J_tip and source a simulation uses: handed_law, else the Cohesive law section
   /// (built and checked on first use).
-  const CrackLaw& crack_law();
-  law::TractionLawPtr law() { return crack_law().law; }
-  double j_tip() { return crack_law().j_tip; }
+  const CrackLaw& crack_law() const;
+  law::TractionLawPtr law() const { return crack_law().law; }
+  double j_tip() const { return crack_law().j_tip; }
   /// The specimen and material a simulation uses: handed_specimen, else the Specimen and
   /// Material sections (defaults: the seed's DCB of Douglas-fir).
   SpecimenSetup specimen_setup() const;
@@ -138,11 +109,13 @@ struct SceneContext {
                        std::shared_ptr<const SceneParameters> parameters = nullptr) const;
 
 private:
-  std::optional<CrackLaw> section_law_; ///< the Cohesive law section, built on first use
+  /// The Cohesive law section, built on first use: a cache of the parameters, which do not
+  /// change, so the const context may fill it.
+  mutable std::optional<CrackLaw> section_law_;
 };
 
-/// One scene item: declares its prm section(s), checks them and runs. Simulation items return
-/// their result through ctx.results[name]; all items add their block to ctx.summary.
+/// One scene item: declares its prm section(s), checks them and runs. `run` returns what it made
+/// (item_outcome.h) and changes nothing in the context; the scene runner merges the outcome.
 struct SceneItem {
   std::string name;
   void (*declare)(dealii::ParameterHandler&); ///< may be nullptr (no own section)
@@ -153,7 +126,7 @@ struct SceneItem {
   /// or writing anything; throws InputError naming the section and key. The scene calls it for
   /// every item of the run before the first item runs.
   void (*check)(SceneContext&);
-  void (*run)(SceneContext&);
+  ItemOutcome (*run)(const SceneContext&);
 };
 
 /// Calls the check of every item in ctx.run_items (which it needs filled), in item order.

@@ -32,6 +32,9 @@ public:
   /// again (with_settings, scene.h).
   std::string scene_file;
   std::vector<std::string> overrides;
+  /// false: no file, the defaults with `overrides` (read_scene_parameters_from_settings); then
+  /// scene_file names the caller.
+  bool from_file = true;
   std::string output_directory; ///< "Output directory"
   std::vector<std::string> run; ///< the items of "Run", in the scene's order
   /// Every entry as deal.II prints it (ShortPRM): parameters_used.prm.

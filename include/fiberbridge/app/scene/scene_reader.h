@@ -19,12 +19,28 @@ namespace fiberbridge::app {
 std::vector<std::string> read_scene(dealii::ParameterHandler& prm, const std::string& prm_file,
                                     const std::vector<std::string>& overrides);
 
+/// The settings ("Section/Key=value", --set's syntax) applied to `prm`, whose sections are
+/// declared, then the Run list checked; returns the items to run. Messages start with `where`
+/// ("--set"), or with `prm_file` when `where` is empty.
+std::vector<std::string> apply_settings_and_check_run(dealii::ParameterHandler& prm,
+                                                      const std::string& prm_file,
+                                                      const std::vector<std::string>& overrides,
+                                                      const std::string& where = "");
+
 class SceneParameters;
 /// The scene read as read_scene does, then every section parsed once into its typed struct
 /// (scene_parameters.h); the handler ends here. Throws InputError for the file, --set and Run;
 /// a section's own error is kept and thrown where an item reads it.
 std::shared_ptr<const SceneParameters>
 read_scene_parameters(const std::string& prm_file, const std::vector<std::string>& overrides);
+
+/// A scene without a file: every section's defaults with `settings` on top (which must set Run),
+/// parsed as read_scene_parameters parses a file's; `where` ("fiberbridge.reduce", the Python
+/// call) stands for the file in messages and as SceneParameters::scene_file (relative paths are
+/// then the working directory's). Throws InputError as read_scene_parameters.
+std::shared_ptr<const SceneParameters>
+read_scene_parameters_from_settings(const std::string& where,
+                                    const std::vector<std::string>& settings);
 
 /// One setting "Section/Sub/Key=value" applied to `prm` (the scene's --set, a study's
 /// overrides); set() validates the value against the entry's pattern. Throws InputError that
