@@ -1,7 +1,7 @@
 # The library graph (docs/design.md section 4), one-way:
 #   core <- law <- result <- analysis ; core <- specimen <- analysis ;
 #   law + specimen + result <- beam, mpm, fem (each on its own) ;
-#   core <- dic (DIC frames) <- result (the virtual DIC test writes frames in dic's layouts) ; analysis + beam <- identify ; everything <- app.
+#   core <- dic (DIC frames) <- result (the virtual DIC test writes frames in dic's layouts) ; analysis + beam <- identify ; everything <- app <- python.
 # FIBERBRIDGE_LAYER_<lib> lists the libraries whose headers the sources of <lib> may include
 # (besides its own). fiberbridge_check_layer(<lib>) enforces it at configure time: every
 # `#include "fiberbridge/<dir>/..."` in source/<lib>/ and include/fiberbridge/<lib>/ must name
@@ -19,6 +19,9 @@ foreach(model ${FIBERBRIDGE_ALL_MODELS})
 endforeach()
 set(FIBERBRIDGE_LAYER_identify beam analysis result specimen law core)
 set(FIBERBRIDGE_LAYER_app identify ${FIBERBRIDGE_ALL_MODELS} dic analysis result specimen law core)
+# The Python module binds the app's typed API (and what its outcomes hold) for Python scripts.
+set(FIBERBRIDGE_LAYER_python app identify ${FIBERBRIDGE_ALL_MODELS} dic analysis result specimen law
+                             core)
 
 # The app's rooms (docs/design.md section 4, "The app's rooms"), one-way like the libraries:
 #   scene <- outputs <- run <- items <- cli.

@@ -1,0 +1,26 @@
+#pragma once
+// The module's parts (module.cc calls each): one file per part of the chain.
+#include <pybind11/pybind11.h>
+
+#include <chrono>
+#include <string>
+
+namespace fiberbridge::python {
+
+namespace py = pybind11;
+
+void bind_records(py::module_& m);  ///< read_records, reduce (bind_records.cc)
+void bind_law(py::module_& m);      ///< extract, fit_trilinear (bind_law.cc)
+void bind_simulate(py::module_& m); ///< simulate, run_scene (bind_simulate.cc)
+void bind_dic(py::module_& m);      ///< dic (bind_dic.cc)
+void bind_campaign(py::module_& m); ///< campaign (bind_campaign.cc)
+
+/// Seconds since `t0` (steady clock).
+inline double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// A summary.json block as the Python object json.loads makes of it.
+py::object python_of_json_text(const std::string& json_text);
+
+} // namespace fiberbridge::python

@@ -1,0 +1,71 @@
+"""extract and fit_trilinear against `fiberbridge extract` (the same doubles), extract from a
+reduction's R(delta_root) against a scene's reduce-then-extract, and their input errors."""
+import numpy as np
+import pytest
+
+from conftest import COLUMNS, RECORDS, SPECIMEN, read_csv, read_summary, run_cli
+
+DATA = "data/sample_rdelta_pva_control.csv"
+
+
+def test_extract_and_fit_give_the_command_line_s_numbers(fb, out):
+    run_cli("extract", DATA, "--out", out)
+    s = read_summary(out)
+    e = fb.extract(DATA)
+    assert e.J_tip_J_m2 == s["J_tip_J_m2"]
+    assert e.G_ss_J_m2 == s["G_ss_J_m2"]
+    assert e.delta_c_mm == s["delta_c_mm"]
+    assert max(e.sigma_eq5_kPa) == s["peak_sigma_eq5_kPa"]
+    law = read_csv(f"{out}/cohesive_law_eq5.csv")
+    # 10 significant digits in the CSV (core/csv.cc).
+    np.testing.assert_allclose(e.delta_mm, law["delta_mm"], rtol=1e-9, atol=1e-12)
+    np.testing.assert_allclose(e.sigma_eq5_kPa, law["sigma_kPa"], rtol=1e-9, atol=1e-9)
+    fit = fb.fit_trilinear(e)
+    for key in ("sigma1_kPa", "sigma2_kPa", "delta1_mm", "delta2_mm", "J1_J_m2", "J2_J_m2",
+                "rms_residual_kPa"):
+        assert getattr(fit, key) == s["trilinear"][key], key
+    free = fb.fit_trilinear(e, free_breakpoints=True)
+    assert free.breakpoints.startswith("free")
+
+
+def test_extract_settings_are_the_data_section_s(fb):
+    fixed = fb.extract(DATA, delta_c_mm=6.0, j_tip=200.0)
+    assert fixed.delta_c_mm == 6.0 and fixed.J_tip_J_m2 == 200.0
+    assert not fixed.delta_c_automatic and not fixed.J_tip_automatic
+    with pytest.raises(fb.InputError, match="Intervals"):
+        fb.extract(DATA, intervals=0)
+
+
+def test_a_reduction_without_delta_root_is_refused_naming_the_record(fb):
+    red = fb.reduce(RECORDS[:1], columns=COLUMNS, **SPECIMEN)
+    with pytest.raises(fb.InputError, match="DCB-01_Toughness.*delta_root"):
+        fb.extract(red)
+
+
+def test_extract_from_a_reduction_is_the_scene_s_reduce_then_extract(fb, tmp_path):
+    # A shared record with a notch-root opening added (a tenth of the load-line opening plus a
+    # rise with the crack: any increasing column serves; the test is that both doors agree).
+    rec = fb.read_record(RECORDS[0], columns=COLUMNS)
+    da = np.nan_to_num(rec.a_mm - rec.a_mm[0])
+    root = 0.1 * rec.opening_mm + 0.02 * da
+    path = tmp_path / "with_root.csv"
+    with open(path, "w") as f:
+        f.write("time_s,opening_mm,load_N,a_mm,delta_root_mm\n")
+        for row in zip(rec.time_s, rec.opening_mm, rec.load_N, rec.a_mm, root):
+            f.write(",".join(repr(float(x)) for x in row) + "\n")
+    red = fb.reduce(str(path), **SPECIMEN)
+    e = fb.extract(red, delta_c_mm=1.0)
+    scene = tmp_path / "scene.prm"
+    scene.write_text("set Run = reduce, extract\n"
+                     "subsection Specimen\n  set Width = 25\n  set Height = 5.4\n"
+                     "  set Length = 123\nend\n"
+                     "subsection Material\n  set E_L = 19300\n  set E_T = 6110\n"
+                     "  set G_LT = 2288\n  set nu_LT = 0.3\nend\n"
+                     f"subsection Test\n  set Files = {path}\nend\n"
+                     "subsection Data\n  set Delta c = 1.0\nend\n")
+    out = tmp_path / "out"
+    run_cli("run", str(scene), "--set", f"Output directory={out}")
+    s = read_summary(out)
+    assert e.J_tip_J_m2 == s["J_tip_J_m2"]
+    assert e.G_ss_J_m2 == s["G_ss_J_m2"]
+    assert max(e.sigma_eq5_kPa) == s["peak_sigma_eq5_kPa"]
