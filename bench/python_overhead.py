@@ -6,7 +6,7 @@ The overhead is everything else: the settings read by the scene reader (once per
 the module keeps them, source/python/python_scene.cc), the arguments, the numpy arrays and dicts
 out, the package's wrapper. Medians of the calls after the first; the first is printed apart.
 
-    PYTHONPATH=build/python python3 bench/python_overhead.py [--rows 100000] [--repeats 5]
+    PYTHONPATH=build/python /usr/bin/python3 bench/python_overhead.py [--rows 100000] [--repeats 8]
 """
 import argparse
 import os

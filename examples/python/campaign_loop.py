@@ -4,7 +4,7 @@ five materials and four moisture-cycle counts, data/campaign_synthetic) analysed
 rules, and each group's sigma1 with its two 95 % intervals side by side; then the ranking with
 its confidence. fb.campaign computes what a scene's campaign computes and writes nothing.
 
-    PYTHONPATH=build/python python3 examples/python/campaign_loop.py
+    PYTHONPATH=build/python /usr/bin/python3 examples/python/campaign_loop.py
 """
 import fiberbridge as fb
 

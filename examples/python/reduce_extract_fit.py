@@ -4,7 +4,7 @@ extracted to the bridging law (Eq. 5/6 beside sigma = dR/ddelta) and fitted, the
 back in the beam model, and R(a) plotted with matplotlib when it is installed. Run from the
 repository root with the build tree's package:
 
-    PYTHONPATH=build/python python3 examples/python/reduce_extract_fit.py
+    PYTHONPATH=build/python /usr/bin/python3 examples/python/reduce_extract_fit.py
 """
 import fiberbridge as fb
 
