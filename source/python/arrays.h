@@ -28,4 +28,15 @@ inline py::array_t<double> scaled_array(const std::vector<double>& v, double uni
   return out;
 }
 
+/// One field of each row (a struct per row: an R-curve point, a DIC record row) divided by `unit`,
+/// as a 1-D float64 array: a table's column.
+template <class Row>
+py::array_t<double> member_array(const std::vector<Row>& rows, double Row::*field, double unit) {
+  std::vector<double> v;
+  v.reserve(rows.size());
+  for (const auto& r : rows)
+    v.push_back(r.*field / unit);
+  return moved_array(std::move(v));
+}
+
 } // namespace fiberbridge::python

@@ -15,20 +15,7 @@
 
 namespace fiberbridge::python {
 
-namespace {
-
 using units::mm;
-
-template <class Row>
-py::array_t<double> column(const std::vector<Row>& rows, double Row::*field, double unit) {
-  std::vector<double> v;
-  v.reserve(rows.size());
-  for (const auto& r : rows)
-    v.push_back(r.*field / unit);
-  return moved_array(std::move(v));
-}
-
-} // namespace
 
 void bind_dic(py::module_& m) {
   m.def(
@@ -46,21 +33,21 @@ void bind_dic(py::module_& m) {
         }
         py::dict d;
         // The test record dic_record.csv holds, row per used frame in the machine's time span.
-        d["time_s"] = column(match.rows, &dic::DicRecordRow::time, 1);
-        d["opening_mm"] = column(match.rows, &dic::DicRecordRow::opening, mm);
-        d["load_N"] = column(match.rows, &dic::DicRecordRow::load, 1);
-        d["a_mm"] = column(match.rows, &dic::DicRecordRow::a, mm);
-        d["a_sd_mm"] = column(match.rows, &dic::DicRecordRow::a_sd, mm);
-        d["delta_root_mm"] = column(match.rows, &dic::DicRecordRow::delta_root, mm);
-        d["delta_root_sd_mm"] = column(match.rows, &dic::DicRecordRow::delta_root_sd, mm);
+        d["time_s"] = member_array(match.rows, &dic::DicRecordRow::time, 1);
+        d["opening_mm"] = member_array(match.rows, &dic::DicRecordRow::opening, mm);
+        d["load_N"] = member_array(match.rows, &dic::DicRecordRow::load, 1);
+        d["a_mm"] = member_array(match.rows, &dic::DicRecordRow::a, mm);
+        d["a_sd_mm"] = member_array(match.rows, &dic::DicRecordRow::a_sd, mm);
+        d["delta_root_mm"] = member_array(match.rows, &dic::DicRecordRow::delta_root, mm);
+        d["delta_root_sd_mm"] = member_array(match.rows, &dic::DicRecordRow::delta_root_sd, mm);
         std::vector<std::size_t> frame;
         for (const auto& r : match.rows)
           frame.push_back(r.frame);
         d["frame"] = frame;
         // Every frame read, used or not, with its own notes.
         const auto& frames = match.analysis.frames;
-        d["frame_time_s"] = column(frames, &dic::FrameResult::time, 1);
-        d["frame_tip_mm"] = column(frames, &dic::FrameResult::s_tip, mm);
+        d["frame_time_s"] = member_array(frames, &dic::FrameResult::time, 1);
+        d["frame_tip_mm"] = member_array(frames, &dic::FrameResult::s_tip, mm);
         std::vector<bool> used;
         std::vector<std::size_t> points, failed;
         py::list frame_notes, files;

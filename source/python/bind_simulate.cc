@@ -27,11 +27,7 @@ using units::mm;
 /// The R curve's columns, as rcurve_<model>.csv names them.
 py::dict rcurve_dict(const result::SimulationResult& r) {
   const auto column = [&](double result::RCurvePoint::*field, double unit) {
-    std::vector<double> v;
-    v.reserve(r.rcurve.size());
-    for (const auto& p : r.rcurve)
-      v.push_back(p.*field / unit);
-    return moved_array(std::move(v));
+    return member_array(r.rcurve, field, unit);
   };
   py::dict d;
   d["a_mm"] = column(&result::RCurvePoint::a, mm);
