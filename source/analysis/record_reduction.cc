@@ -3,6 +3,7 @@
 #include "fiberbridge/analysis/record_reduction.h"
 
 #include "fiberbridge/analysis/energy_rate.h"
+#include "fiberbridge/analysis/initial_rise.h"
 #include "fiberbridge/analysis/line_fit.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
@@ -115,6 +116,90 @@ EnergySlopes slopes_of(const std::vector<double>& a, const std::vector<double>& 
 /// either side of a stall and of the jump that ends it (energy_rate.h; docs/design.md section 6).
 constexpr double monotone_reading_intervals = 4;
 
+/// R_energy at initiation from the dissipated energy itself (initial_rise.h), where the notch-root
+/// opening is measured: the readings from the first growth reading to the end of the fit take
+/// the fitted R(delta_root), their band keeps its half-widths. `first_growth`: the record's row
+/// of the first growth reading (the rows before it give D's noise).
+void refit_initiation(const std::vector<double>& D, std::size_t first_growth,
+                      const std::vector<double>& windows, const Setup& s, ReducedRecord& out) {
+  if (out.rows.empty() || first_growth == 0)
+    return;
+  // D's noise before growth: successive differences (its slow elastic-nonlinear trend cancels).
+  double ss = 0;
+  std::size_t m = 0;
+  for (std::size_t k = 1; k < first_growth; ++k, ++m)
+    ss += std::pow(D[k] - D[k - 1], 2);
+  const double noise = m ? std::sqrt(ss / static_cast<double>(m) / 2) : 0.0;
+  std::vector<double> Dr;
+  for (std::size_t k : out.rows)
+    Dr.push_back(D[k]);
+  const InitialRise fit =
+      fit_initial_rise(out.a, out.delta_root, Dr, D[first_growth - 1], noise, s.B);
+  if (!fit.fitted) {
+    out.notes.push_back("R at initiation: left to the windowed slopes (" + fit.why + ")");
+    return;
+  }
+  // The fit and the windowed slopes must agree where the fit ends (the windows there are no
+  // longer one-sided): a fit that bent to the noise of a few sparse readings does not.
+  const std::size_t last = fit.end - 1;
+  double delta_last = 0;
+  for (std::size_t i = 0; i <= last; ++i)
+    delta_last = std::max(delta_last, out.delta_root[i]);
+  if (!(fit.R(delta_last) >= out.R_energy_lo[last] && fit.R(delta_last) <= out.R_energy_hi[last])) {
+    out.notes.push_back("R at initiation: left to the windowed slopes (the fit to D, J " +
+                        num(fit.j_tip) + " J/m^2, gives R " + num(fit.R(delta_last)) +
+                        " J/m^2 at its last reading, outside the windowed band " +
+                        num(out.R_energy_lo[last]) + " to " + num(out.R_energy_hi[last]) + ")");
+    return;
+  }
+  auto set_R = [&](std::size_t i, double R) {
+    out.R_energy_lo[i] = R - (out.R_energy[i] - out.R_energy_lo[i]);
+    out.R_energy_hi[i] = R + (out.R_energy_hi[i] - out.R_energy[i]);
+    out.R_energy[i] = R;
+  };
+  double running = 0;
+  for (std::size_t i = 0; i < fit.end; ++i) {
+    running = std::max(running, out.delta_root[i]);
+    set_R(i, fit.R(running));
+  }
+  // Past the fit, the readings whose window still reaches back before the onset would be
+  // one-sided too (and step up from the fitted R: a kink that Eq. 6 and dR/ddelta read as
+  // stress). Their slope is taken over the window centred on them that reaches back to the
+  // onset, at least the fit's readings either side, until their own window fits.
+  const double a_onset = out.a[fit.onset];
+  std::size_t transition = 0;
+  for (std::size_t i = fit.end; i < out.a.size() && out.a[i] - windows[i] / 2 < a_onset; ++i) {
+    const double half = out.a[i] - a_onset;
+    const auto b = static_cast<std::size_t>(
+        std::lower_bound(out.a.begin(), out.a.end(), out.a[i] - half * (1 + 1e-6)) - out.a.begin());
+    const auto e = static_cast<std::size_t>(
+        std::upper_bound(out.a.begin(), out.a.end(), out.a[i] + half * (1 + 1e-6)) - out.a.begin());
+    const LineFit f = fit_line(out.a, Dr, b, e);
+    if (f.valid && e - b >= 3) {
+      set_R(i, f.slope / s.B);
+      ++transition;
+    }
+  }
+  out.notes.push_back(
+      "R at initiation: R_energy over the first " + std::to_string(fit.end) +
+      " readings (delta_root up to " + num(fit.delta_end / units::mm) +
+      " mm) is R = J + s max(0, delta_root - delta_h) fitted to D itself (seed Eq. 2 near "
+      "initiation; a window's slope there is one-sided and reads high): J " +
+      num(fit.j_tip) + " J/m^2, s " + num(fit.slope * units::mm) + " J/m^2 per mm, delta_h " +
+      num(fit.hinge / units::mm) + " mm; dissipation starts at reading " +
+      std::to_string(fit.onset + 1) + " (a " + num(out.a[fit.onset] / units::mm) +
+      " mm); the next " + std::to_string(transition) +
+      " readings take windows centred on them that reach back to the onset; "
+      "R_energy_readings keeps the windowed slopes");
+  if (fit.slope > 0 && !(fit.hinge > out.delta_root[fit.onset]))
+    out.notes.push_back(
+        "R at initiation: R rises from the first dissipating reading (delta_root " +
+        num(out.delta_root[fit.onset] / units::mm) +
+        " mm) on: the law's elastic part ends before the readings resolve it, so J_tip (R while "
+        "delta_root is on that part, seed Eq. 2) is below the first R, " +
+        num(fit.j_tip) + " J/m^2, by an amount the record does not hold");
+}
+
 /// The beam-theory reductions and direct energy against the measured crack readings.
 void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const Setup& s,
                      ReducedRecord& out) {
@@ -223,6 +308,11 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
     out.R_energy_readings.push_back(as_read.slope[j] / s.B);
     out.rows.push_back(k);
   }
+  std::vector<double> windows_used;
+  for (std::size_t j : beyond)
+    windows_used.push_back(used.window[j]);
+  if (!rec.delta_root.empty())
+    refit_initiation(D, beyond.empty() ? 0 : readings[beyond.front()], windows_used, s, out);
   out.notes.push_back(
       "direct energy: R = dD/(B da), D = W - P opening/2, slope of a local least-squares line of "
       "D against a over a " +

@@ -14,12 +14,13 @@
 namespace fiberbridge::test {
 namespace {
 
-/// The study on `cases` into a fresh work directory; its summary.
-Json run_chain_study(const std::string& name, const std::string& cases) {
+/// The study on `cases` into a fresh work directory; its summary. `more`: further --set options.
+Json run_chain_study(const std::string& name, const std::string& cases,
+                     const std::string& more = "") {
   const auto r = run(name, "run '" + source("prm/study_chain.prm") +
                                "' --set 'Output directory=out' --set 'Chain study/Table 1=" +
                                source("data/reference/seed_table1.csv") +
-                               "' --set 'Chain study/Cases=" + cases + "'");
+                               "' --set 'Chain study/Cases=" + cases + "'" + more);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   return read_json(work(name) / "out" / "summary.json");
 }
@@ -88,11 +89,31 @@ TEST(ChainStudy, IdentifyRunsOnTheSameVirtualTest) {
 }
 
 TEST(ChainStudyTargets, Table1LawsAtOneHertz) {
-  // The PVA control law (the base), two of the 16-cycle laws the issue saw refused.
-  const Json s = run_chain_study("chain_study_targets", "base, EPI_c16, PF_c16");
+  // The PVA control law (the base), two of the 16-cycle laws the issue saw refused, and the
+  // Table 1 law whose J_tip the windowed slopes put at +10.0 % (R at initiation fitted to D,
+  // docs/design.md: +1.6 %).
+  const Json s = run_chain_study("chain_study_targets", "base, EPI_c16, PF_c16, PF_c24");
   ASSERT_TRUE(s.contains("chain_study"));
   for (const auto& c : s["chain_study"]["cases"])
     expect_targets(c);
+}
+// J_tip on a law no Table 1 group has: a steep, short rise (1.2 MPa at 0.05 mm, 0.3 MPa at
+// 0.5 mm, delta_c 3 mm, J_tip 150 J/m^2). The one-sided windows at the first readings read J_tip
+// +26 % here; R at initiation fitted to D itself gives -3.6 % (docs/verification.md, "R at
+// initiation"). Bound: issue 39's J_tip target, 10 % or 20 J/m^2. (sigma1 and sigma2 are at the
+// paper's fixed d1 = 0.1 and d2 = 1 mm, which this law's kinks are not: no bound on them.)
+TEST(ChainStudyTargets, JtipOfASteepShortLaw) {
+  const Json s = run_chain_study("chain_study_steep_law", "base",
+                                 " --set 'Cohesive law/Points=0.05:1200, 0.5:300'"
+                                 " --set 'Cohesive law/Delta c=3' --set 'Cohesive law/J tip=150'");
+  ASSERT_TRUE(s.contains("chain_study"));
+  const Json& c = s["chain_study"]["cases"][0];
+  ASSERT_EQ(c["outcome"].get<std::string>(), "recovered") << c.dump();
+  const double j = get(c, "J_tip_J_m2"), jt = get(c, "J_tip_true_J_m2");
+  EXPECT_EQ(jt, 150);
+  EXPECT_TRUE(std::abs(j - jt) <= 0.10 * jt || std::abs(j - jt) <= 20)
+      << "J_tip " << j << " against " << jt;
+  EXPECT_LE(std::abs(get(c, "G_ss_err_rel")), 0.02) << c.dump();
 }
 #else
 TEST(ChainStudy, SkippedWithoutTheFem) {

@@ -156,6 +156,9 @@ TEST(IdentifyFromFem, ThreeRoutesWithDeltaRoot) {
   ts.width = record_specimen().width;
   ts.height = record_specimen().height;
   const auto reduced = analysis::reduce_record(rec, ts);
+  for (const auto& note : reduced.notes) // what the start of R_energy rests on
+    if (note.rfind("R at initiation", 0) == 0)
+      std::printf("%s\n", note.c_str());
   const auto laws = extract(analysis::to_rdelta({reduced}, "record"), k);
   // Route 3: the identification, which does not see delta_root. One start (the test above
   // checks the identification's accuracy with the default two); here it is one of the routes.
