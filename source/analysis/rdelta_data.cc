@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -23,8 +24,21 @@ std::string where(const std::string& source, std::size_t line) {
   return source + ":" + std::to_string(line);
 }
 
+/// Where a row came from: the file and its line, or (arrays in memory) the source and the row's
+/// 1-based index.
+struct RowPlaces {
+  std::string source;
+  std::function<std::size_t(std::size_t)> line_of; ///< line (or index) of a row
+  const char* word = "line";                       ///< "line" or "row"
+  /// "file:12" or "source, row 12".
+  std::string at(std::size_t line) const {
+    return std::string(word) == "line" ? where(source, line)
+                                       : source + ", row " + std::to_string(line);
+  }
+};
+
 /// Rows of one replicate in time order (file order without a time column), checked.
-Replicate build_replicate(const CsvTable& t, const std::string& label,
+Replicate build_replicate(const RowPlaces& t, const std::string& label,
                           const std::vector<std::size_t>& rows, const std::vector<double>& delta_mm,
                           const std::vector<double>& R, const std::vector<double>* a_mm,
                           const std::vector<double>* time_s) {
@@ -35,26 +49,26 @@ Replicate build_replicate(const CsvTable& t, const std::string& label,
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t p, std::size_t q) { return (*time_s)[p] < (*time_s)[q]; });
 
-  const std::string& src = t.source();
+  const std::string& src = t.source;
   Replicate r;
   r.label = label;
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::size_t row = order[k];
-    const std::size_t line = t.line_of_row(row);
+    const std::size_t line = t.line_of(row);
     if (delta_mm[row] < 0)
-      throw InputError(where(src, line) + ": delta_mm = " + std::to_string(delta_mm[row]) +
+      throw InputError(t.at(line) + ": delta_mm = " + std::to_string(delta_mm[row]) +
                        " is negative; the notch-root opening must be >= 0");
     if (R[row] < 0)
-      throw InputError(where(src, line) + ": R_J_m2 = " + std::to_string(R[row]) +
+      throw InputError(t.at(line) + ": R_J_m2 = " + std::to_string(R[row]) +
                        " is negative; a toughness must be >= 0");
     if (a_mm && (*a_mm)[row] < 0)
-      throw InputError(where(src, line) + ": a_mm = " + std::to_string((*a_mm)[row]) +
+      throw InputError(t.at(line) + ": a_mm = " + std::to_string((*a_mm)[row]) +
                        " is negative; the crack position must be >= 0");
     if (k > 0 && delta_mm[row] < delta_mm[order[k - 1]])
       throw InputError(
-          where(src, line) + ": delta_mm = " + std::to_string(delta_mm[row]) + " is smaller than " +
-          std::to_string(delta_mm[order[k - 1]]) + " on line " +
-          std::to_string(t.line_of_row(order[k - 1])) + (time_s ? " earlier in time" : " above") +
+          t.at(line) + ": delta_mm = " + std::to_string(delta_mm[row]) + " is smaller than " +
+          std::to_string(delta_mm[order[k - 1]]) + " on " + t.word + " " +
+          std::to_string(t.line_of(order[k - 1])) + (time_s ? " earlier in time" : " above") +
           " (replicate '" + label +
           "'); the notch-root opening is the reference parameter and must not decrease");
     r.delta.push_back(delta_mm[row] * units::mm);
@@ -67,7 +81,7 @@ Replicate build_replicate(const CsvTable& t, const std::string& label,
   }
   if (r.delta.size() < min_rows_per_replicate)
     throw InputError(src + ": replicate '" + label + "' has " + std::to_string(r.delta.size()) +
-                     " rows (last on line " + std::to_string(t.line_of_row(rows.back())) +
+                     " rows (last on " + t.word + " " + std::to_string(t.line_of(rows.back())) +
                      "); at least " + std::to_string(min_rows_per_replicate) +
                      " are needed to fit slopes");
   return r;
@@ -139,10 +153,60 @@ RDeltaData read_rdelta_csv(const std::string& path) {
 
   RDeltaData data;
   data.source = path;
+  const RowPlaces places{path, [&t](std::size_t row) { return t.line_of_row(row); }};
   for (std::size_t r = 0; r < labels.size(); ++r)
-    data.replicates.push_back(build_replicate(t, labels[r], rows[r], delta_mm, R,
+    data.replicates.push_back(build_replicate(places, labels[r], rows[r], delta_mm, R,
                                               a_mm.empty() ? nullptr : &a_mm,
                                               time_s.empty() ? nullptr : &time_s));
+  return data;
+}
+
+RDeltaData rdelta_from_columns(const std::string& source, const RDeltaColumns& c) {
+  const std::size_t n = c.delta_mm.size();
+  auto check_column = [&](const std::vector<double>& v, const char* name, bool optional) {
+    if (optional && v.empty())
+      return;
+    if (v.size() != n)
+      throw InputError(source + ": " + name + " has " + std::to_string(v.size()) +
+                       " values, delta_mm has " + std::to_string(n));
+    for (std::size_t i = 0; i < n; ++i)
+      if (!std::isfinite(v[i]))
+        throw InputError(source + ", row " + std::to_string(i + 1) + ": " + name +
+                         " is not a finite number");
+  };
+  check_column(c.delta_mm, "delta_mm", false);
+  check_column(c.R_J_m2, "R_J_m2", false);
+  check_column(c.a_mm, "a_mm", true);
+  check_column(c.time_s, "time_s", true);
+  if (!c.replicate.empty() && c.replicate.size() != n)
+    throw InputError(source + ": replicate has " + std::to_string(c.replicate.size()) +
+                     " labels, delta_mm has " + std::to_string(n) + " values");
+  // Replicates in order of first appearance, as the file reader splits them.
+  std::vector<std::string> labels;
+  std::vector<std::vector<std::size_t>> rows;
+  std::map<std::string, std::size_t> index;
+  for (std::size_t row = 0; row < n; ++row) {
+    const std::string label = c.replicate.empty() ? "1" : c.replicate[row];
+    if (label.empty())
+      throw InputError(source + ", row " + std::to_string(row + 1) +
+                       ": the replicate label is empty");
+    const auto it = index.find(label);
+    if (it == index.end()) {
+      index.emplace(label, labels.size());
+      labels.push_back(label);
+      rows.push_back({row});
+    } else
+      rows[it->second].push_back(row);
+  }
+  if (labels.empty())
+    throw InputError(source + ": no rows");
+  RDeltaData data;
+  data.source = source;
+  const RowPlaces places{source, [](std::size_t row) { return row + 1; }, "row"};
+  for (std::size_t r = 0; r < labels.size(); ++r)
+    data.replicates.push_back(build_replicate(places, labels[r], rows[r], c.delta_mm, c.R_J_m2,
+                                              c.a_mm.empty() ? nullptr : &c.a_mm,
+                                              c.time_s.empty() ? nullptr : &c.time_s));
   return data;
 }
 

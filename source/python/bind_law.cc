@@ -6,6 +6,7 @@
 #include "python_scene.h"
 
 #include "fiberbridge/analysis/law_extraction.h"
+#include "fiberbridge/analysis/rdelta_data.h"
 #include "fiberbridge/analysis/record_reduction.h"
 #include "fiberbridge/app/scene/step_outcomes.h"
 #include "fiberbridge/core/error.h"
@@ -77,6 +78,26 @@ void bind_law(py::module_& m) {
         return extraction_dict(e);
       },
       py::arg("settings"), "Eq. 5/6 and sigma = R' from Data/File with the Data section's keys.");
+
+  m.def(
+      "extract_columns",
+      [](std::vector<double> delta_mm, std::vector<double> R_J_m2, std::vector<double> a_mm,
+         std::vector<double> time_s, std::vector<std::string> replicate,
+         const std::vector<std::string>& settings) {
+        std::shared_ptr<const analysis::ExtractionOutcome> e;
+        {
+          py::gil_scoped_release free;
+          analysis::RDeltaColumns c{std::move(delta_mm), std::move(R_J_m2), std::move(a_mm),
+                                    std::move(time_s), std::move(replicate)};
+          e = extract_with(settings,
+                           std::make_shared<const analysis::RDeltaData>(
+                               analysis::rdelta_from_columns("fiberbridge.extract (arrays)", c)));
+        }
+        return extraction_dict(e);
+      },
+      py::arg("delta_mm"), py::arg("R_J_m2"), py::arg("a_mm"), py::arg("time_s"),
+      py::arg("replicate"), py::arg("settings"),
+      "Eq. 5/6 and sigma = R' from R(delta) columns in memory, checked as a file's are.");
 
   m.def(
       "extract_reduced",

@@ -49,7 +49,9 @@ void bind_simulate(py::module_& m) {
   m.def(
       "simulate",
       [](const std::string& model, const std::vector<std::string>& settings,
-         std::optional<std::vector<double>> trilinear_si, std::optional<double> j_tip) {
+         std::optional<std::vector<double>> trilinear_si, std::optional<double> j_tip,
+         const py::object& progress) {
+        const app::ProgressLines lines = progress_lines(progress);
         result::SimulationResult r;
         double compute_s = 0;
         std::string law_name;
@@ -81,7 +83,7 @@ void bind_simulate(py::module_& m) {
           law_name = ctx.law()->name();
           law_j_tip = ctx.j_tip();
           const auto t0 = std::chrono::steady_clock::now();
-          r = entry->simulate(ctx, *ctx.law(), ctx.j_tip());
+          r = entry->simulate(ctx, *ctx.law(), ctx.j_tip(), lines);
           compute_s = seconds_since(t0);
         }
         py::dict d = rcurve_dict(r);
@@ -100,8 +102,9 @@ void bind_simulate(py::module_& m) {
         return d;
       },
       py::arg("model"), py::arg("settings"), py::arg("trilinear_si") = py::none(),
-      py::arg("j_tip") = py::none(),
-      "One model's R curve with the call's law and specimen (writes nothing).");
+      py::arg("j_tip") = py::none(), py::arg("progress") = py::none(),
+      "One model's R curve with the call's law and specimen (writes nothing); progress(line) "
+      "gets the model's progress lines.");
 
   m.def(
       "run_scene",

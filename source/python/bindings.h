@@ -3,6 +3,7 @@
 #include <pybind11/pybind11.h>
 
 #include <chrono>
+#include <functional>
 #include <string>
 
 namespace fiberbridge::python {
@@ -14,11 +15,18 @@ void bind_law(py::module_& m);      ///< extract, fit_trilinear (bind_law.cc)
 void bind_simulate(py::module_& m); ///< simulate, run_scene (bind_simulate.cc)
 void bind_dic(py::module_& m);      ///< dic (bind_dic.cc)
 void bind_campaign(py::module_& m); ///< campaign (bind_campaign.cc)
+void bind_identify(py::module_& m); ///< identify (bind_identify.cc)
 
 /// Seconds since `t0` (steady clock).
 inline double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
+
+/// The progress callback a long call hands its model: at each progress line, with the GIL held,
+/// Python's signal handlers run (Ctrl-C raises KeyboardInterrupt there), then `progress(line)`
+/// unless it is None. Either exception is thrown through the model, which unwinds and has written
+/// nothing. (module.cc)
+std::function<void(const std::string&)> progress_lines(const py::object& progress);
 
 /// A summary.json block as the Python object json.loads makes of it.
 py::object python_of_json_text(const std::string& json_text);

@@ -17,6 +17,20 @@ py::object python_of_json_text(const std::string& json_text) {
   return py::module_::import("json").attr("loads")(json_text);
 }
 
+std::function<void(const std::string&)> progress_lines(const py::object& progress) {
+  // A borrowed handle, not a py::object: the models copy their callback (DcbModel keeps one)
+  // while the GIL is released, and copying an object would touch its reference count without it.
+  // The caller's argument keeps the callable alive for the call.
+  const py::handle callable = progress;
+  return [callable](const std::string& line) {
+    py::gil_scoped_acquire hold;
+    if (PyErr_CheckSignals() != 0)
+      throw py::error_already_set();
+    if (!callable.is_none())
+      callable(line);
+  };
+}
+
 namespace {
 
 dealii::Utilities::MPI::MPI_InitFinalize* mpi = nullptr;
@@ -59,4 +73,5 @@ PYBIND11_MODULE(_core, m) {
   bind_simulate(m);
   bind_dic(m);
   bind_campaign(m);
+  bind_identify(m);
 }

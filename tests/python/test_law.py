@@ -69,3 +69,33 @@ def test_extract_from_a_reduction_is_the_scene_s_reduce_then_extract(fb, tmp_pat
     assert e.J_tip_J_m2 == s["J_tip_J_m2"]
     assert e.G_ss_J_m2 == s["G_ss_J_m2"]
     assert max(e.sigma_eq5_kPa) == s["peak_sigma_eq5_kPa"]
+
+
+def test_columns_in_memory_give_the_file_s_law(fb):
+    # The sample file's columns as numpy arrays (the CSV's own doubles, read back here): the same
+    # table, so the same law to the last bit.
+    cols = read_csv(DATA)
+    data = {k: np.array(v) for k, v in cols.items() if k != "replicate"}
+    if "replicate" in cols:
+        data["replicate"] = [str(v) for v in cols["replicate"]]
+    e = fb.extract(data)
+    f = fb.extract(DATA)
+    assert e.J_tip_J_m2 == f.J_tip_J_m2 and e.G_ss_J_m2 == f.G_ss_J_m2
+    np.testing.assert_array_equal(e.sigma_eq5_kPa, f.sigma_eq5_kPa)
+
+
+@pytest.mark.parametrize("change, message", [
+    (lambda d: d.pop("R_J_m2"), "missing R_J_m2"),
+    (lambda d: d.update(delta_mm=d["delta_mm"][:-1]), "values, delta_mm has"),
+    (lambda d: d["R_J_m2"].__setitem__(3, np.nan), "row 4: R_J_m2 is not a finite number"),
+    (lambda d: d["delta_mm"].__setitem__(5, -1.0), "row 6: delta_mm = -1"),
+    (lambda d: d.update(sigma_kPa=d["R_J_m2"]), "unknown column(s) sigma_kPa"),
+])
+def test_bad_columns_are_named(fb, change, message):
+    cols = read_csv(DATA)
+    data = {k: np.array(v, dtype=float) for k, v in cols.items()
+            if k in ("delta_mm", "R_J_m2", "time_s", "a_mm")}
+    data["replicate"] = [str(v) for v in cols["replicate"]]
+    change(data)
+    with pytest.raises(fb.InputError, match=message.replace("(", r"\(").replace(")", r"\)")):
+        fb.extract(data)

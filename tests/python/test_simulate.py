@@ -64,3 +64,70 @@ def test_run_scene_returns_its_summary(fb, tmp_path):
     assert summary["run"] == ["beam"]
     with pytest.raises(fb.InputError, match="scene file not found"):
         fb.run_scene(tmp_path / "nothing.prm")
+
+
+def test_progress_gets_the_model_s_lines_and_changes_nothing(fb):
+    lines = []
+    sim = fb.simulate(model="fem", progress=lines.append)
+    assert lines[0].startswith("fem (") and lines[-1].startswith("fem: done")
+    assert any(line.startswith("fem: a = ") for line in lines)
+    assert sim.G_ss_J_m2 == fb.simulate(model="fem").G_ss_J_m2
+
+
+class Stop(Exception):
+    pass
+
+
+def test_an_exception_in_progress_stops_the_run(fb):
+    seen = []
+
+    def stop_at_the_second_line(line):
+        seen.append(line)
+        if len(seen) == 2:
+            raise Stop(line)
+
+    with pytest.raises(Stop):
+        fb.simulate(model="fem", progress=stop_at_the_second_line)
+    assert len(seen) == 2
+    # The module is usable after the unwound run.
+    assert fb.simulate(model="beam").reached_steady_state
+
+
+# Ctrl-C in a long call: the FEM at 0.5 mm elements takes about a minute (29 progress lines, one
+# every 2-3 s on this machine). SIGINT after the first line must end the call with
+# KeyboardInterrupt at the next line, well before the run would have finished.
+INTERRUPTED = """
+import sys, time
+import fiberbridge as fb
+said = []
+def progress(line):
+    if not said:
+        said.append(time.time())
+        print("running", flush=True)
+try:
+    fb.simulate(model="fem", settings={"FEM/Element size": 0.5}, progress=progress)
+    print("finished", flush=True)
+except KeyboardInterrupt:
+    print("interrupted after %.1f s" % (time.time() - said[0]), flush=True)
+    sys.exit(3)
+"""
+
+
+def test_ctrl_c_stops_a_long_call(tmp_path):
+    import signal
+    import subprocess
+    import sys
+    import time
+    p = subprocess.Popen([sys.executable, "-c", INTERRUPTED], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
+    try:
+        assert p.stdout.readline().strip() == "running"
+        time.sleep(0.5)
+        p.send_signal(signal.SIGINT)
+        out, err = p.communicate(timeout=30)
+    finally:
+        if p.poll() is None:
+            p.kill()
+    assert p.returncode == 3, (out, err)
+    assert out.startswith("interrupted after"), (out, err)
+    assert float(out.split()[2]) < 15, out

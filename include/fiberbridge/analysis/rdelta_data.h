@@ -28,6 +28,18 @@ struct RDeltaData {
 /// time order (the reference parameter must be monotone), fewer than 8 rows in a replicate.
 RDeltaData read_rdelta_csv(const std::string& path);
 
+/// The columns of an R(delta) table held in memory (the Python module's arrays), in the file's
+/// units; a_mm, time_s and replicate may be empty.
+struct RDeltaColumns {
+  std::vector<double> delta_mm, R_J_m2, a_mm, time_s;
+  std::vector<std::string> replicate;
+};
+
+/// The same table as read_rdelta_csv makes, with its checks, from columns in memory: messages
+/// name `source` and the 1-based row. Also refused: columns of different lengths, non-finite
+/// values (the file reader refuses them as cells).
+RDeltaData rdelta_from_columns(const std::string& source, const RDeltaColumns& columns);
+
 /// One R(delta) curve on a grid (the averaged replicates).
 struct RDeltaCurve {
   std::vector<double> delta; ///< increasing [m]

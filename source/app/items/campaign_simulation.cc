@@ -35,7 +35,7 @@ result::SimulationResult run_model(const SceneContext& ctx, const std::string& m
   const SimulationModel* m = built_model(model);
   if (!m || !m->simulate)
     throw InputError("Campaign/Simulation model: '" + model + "' is not available in this build");
-  return m->simulate(ctx, law, j_tip);
+  return m->simulate(ctx, law, j_tip, {});
 }
 
 /// The group's simulation before it runs: its name, model and specimen (with the note on

@@ -129,8 +129,10 @@ static void check_beam_item(SceneContext& ctx) {
 }
 
 static result::SimulationResult simulate_beam_law(const SceneContext& ctx,
-                                                  const law::TractionLaw& law, double j_tip) {
-  return beam::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip, beam_parameters(ctx));
+                                                  const law::TractionLaw& law, double j_tip,
+                                                  const ProgressLines& progress) {
+  return beam::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip, beam_parameters(ctx),
+                            progress);
 }
 
 static ItemOutcome run_beam_item(const SceneContext& ctx) {

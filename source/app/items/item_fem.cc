@@ -67,11 +67,12 @@ static void check_fem_item(SceneContext& ctx) {
 }
 
 static result::SimulationResult simulate_fem_law(const SceneContext& ctx,
-                                                 const law::TractionLaw& law, double j_tip) {
+                                                 const law::TractionLaw& law, double j_tip,
+                                                 const ProgressLines& progress) {
   auto params = fem_parameters(ctx);
   // No files: a virtual DIC test writes only for the scene's own FEM run.
   params.virtual_dic.settings.enabled = false;
-  return fem::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip, params, "", {},
+  return fem::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip, params, "", progress,
                            MPI_COMM_SELF);
 }
 

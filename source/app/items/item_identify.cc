@@ -347,6 +347,17 @@ ItemOutcome run_identify_item(const SceneContext& ctx) {
   return out;
 }
 
+identify::Identification
+identify_scene_records(const SceneContext& ctx,
+                       const std::function<void(const std::string&)>& progress,
+                       std::shared_ptr<const std::vector<analysis::TestRecord>>& records) {
+  const auto& section = ctx.parameters().section<IdentifySection>("Identify");
+  records = scene_records(ctx);
+  const SpecimenSetup setup = ctx.specimen_setup();
+  return fit_records(*records, setup.specimen, setup.material, section, progress, {},
+                     forward_model_of(ctx, section));
+}
+
 void check_identified_against_simulations(const SceneContext& ctx, ItemReport& report) {
   // The identified law back through each simulation, on the first record's specimen: the load
   // misfit of the simulated P(opening) against the measured one (large displacements mapped as in

@@ -182,10 +182,11 @@ static void check_mpm_item(SceneContext& ctx) {
 }
 
 static result::SimulationResult simulate_mpm_law(const SceneContext& ctx,
-                                                 const law::TractionLaw& law, double j_tip) {
+                                                 const law::TractionLaw& law, double j_tip,
+                                                 const ProgressLines& progress) {
   mpm::MpmParameters params = mpm_parameters(ctx);
   params.resume = false;
-  return mpm::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip, params, "", {});
+  return mpm::simulate_dcb(ctx.specimen(), ctx.material(), law, j_tip, params, "", progress);
 }
 
 static ItemOutcome run_mpm_item(const SceneContext& ctx) {

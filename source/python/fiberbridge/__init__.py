@@ -15,13 +15,15 @@ raises fb.InputError (a ValueError) with the command line's one-line message; a 
 cannot resolve its case raises fb.ComputationError. Results have .to_dict() and a short repr;
 their arrays are numpy arrays in the units their names say. The C++ work runs without the GIL.
 """
+import numpy as np
+
 from . import _core
 
 InputError = _core.InputError
 ComputationError = _core.ComputationError
 
 __all__ = ["InputError", "ComputationError", "read_record", "read_records", "reduce", "dic",
-           "extract", "fit_trilinear", "campaign", "simulate", "run_scene", "Result"]
+           "extract", "fit_trilinear", "campaign", "simulate", "identify", "run_scene", "Result"]
 
 # Keyword arguments with units -> scene keys (the units are those of the .prm sections).
 _SPECIMEN = {"width_mm": "Specimen/Width", "height_mm": "Specimen/Height",
@@ -147,6 +149,12 @@ class Simulation(Result):
     _kind = "Simulation"
 
 
+class Identification(Result):
+    """identify's result: the trilinear law's fields, .estimates {name: (value, std_error)},
+    .records (each record's fit), the band, .notes, and .law (a TrilinearFit for simulate)."""
+    _kind = "Identification"
+
+
 def read_records(path, columns=None, settings=None, **kwargs):
     """Every record of one file (a file may hold several, by its `record` column), read as a
     scene's reduce reads Test/Files: columns={'load_N': 'Load', 'opening_mm': '#2'}, encoding,
@@ -196,11 +204,31 @@ def dic(frames, machine_record, initial_crack_mm=None, columns=None, settings=No
     return DicResult(_core.dic(s))
 
 
+def _rdelta_columns(data):
+    """(delta_mm, R_J_m2, a_mm, time_s, replicate) of a mapping of columns."""
+    keys = set(data.keys())
+    missing = [k for k in ("delta_mm", "R_J_m2") if k not in keys]
+    if missing:
+        raise InputError("fiberbridge.extract: the columns need delta_mm and R_J_m2 (optionally "
+                         "a_mm, time_s, replicate); missing " + ", ".join(missing))
+    unknown = keys - {"delta_mm", "R_J_m2", "a_mm", "time_s", "replicate"}
+    if unknown:
+        raise InputError("fiberbridge.extract: unknown column(s) " + ", ".join(sorted(unknown)) +
+                         "; expected delta_mm, R_J_m2, a_mm, time_s, replicate")
+
+    def numbers(k):
+        return np.asarray(data[k], dtype=float).ravel() if k in keys else np.empty(0)
+    labels = [str(v) for v in np.asarray(data["replicate"]).ravel()] if "replicate" in keys else []
+    return numbers("delta_mm"), numbers("R_J_m2"), numbers("a_mm"), numbers("time_s"), labels
+
+
 def extract(data, delta_c_mm="auto", j_tip="auto", intervals=None, smoothing=None,
             settings=None):
     """The bridging law by the paper's Eq. 5/6 beside the old sigma = dR/ddelta, with the steady
-    state (J_tip, G_ss, delta_c). `data`: an R(delta) CSV (as `fiberbridge extract` reads it) or a
-    Reduction whose records all measured delta_root_mm."""
+    state (J_tip, G_ss, delta_c). `data`: an R(delta) CSV (as `fiberbridge extract` reads it), a
+    Reduction whose records all measured delta_root_mm, or columns in memory: a mapping (a dict of
+    numpy arrays, a pandas DataFrame) with delta_mm and R_J_m2, optionally a_mm, time_s and
+    replicate, checked as the file's columns are."""
     s = [f"Data/Delta c={_value(delta_c_mm)}", f"Data/J tip={_value(j_tip)}"]
     if intervals is not None:
         s.append(f"Data/Intervals={intervals}")
@@ -209,6 +237,8 @@ def extract(data, delta_c_mm="auto", j_tip="auto", intervals=None, smoothing=Non
     s += _settings("extract", {}, [], settings)
     if isinstance(data, Reduction):
         e = _core.extract_reduced(data._outcome, s)
+    elif hasattr(data, "keys"):
+        e = _core.extract_columns(*_rdelta_columns(data), s)
     else:
         e = _core.extract_file([f"Data/File={data}"] + s)
     outcome = e.pop("outcome")
@@ -255,12 +285,16 @@ def campaign(manifest, settings=None, **kwargs):
     return Campaign(_core.campaign(s))
 
 
-def simulate(law=None, model="beam", j_tip_J_m2=None, settings=None, **kwargs):
+def simulate(law=None, model="beam", j_tip_J_m2=None, settings=None, progress=None, **kwargs):
     """One model's R curve (model 'beam', 'fem' or 'mpm') with `law` on the specimen of the
     keywords (width_mm, height_mm, length_mm, initial_crack_mm, E_L_MPa, ...) and the model's
     section in settings={'FEM/Element size': 1.0}. `law`: a TrilinearFit (with its J_tip unless
     j_tip_J_m2 is given) or None for the Cohesive law section of settings (the seed's PVA law by
-    default). Writes nothing."""
+    default). Writes nothing.
+
+    progress: called with each of the model's progress lines (a str), as the command line prints
+    them (the FEM every 10 tip advances). Ctrl-C is seen at those lines and stops the run with
+    KeyboardInterrupt; an exception raised by progress stops it too."""
     s = _settings("simulate", kwargs, [_SPECIMEN, _MATERIAL], settings)
     tri = None
     if law is not None:
@@ -270,7 +304,30 @@ def simulate(law=None, model="beam", j_tip_J_m2=None, settings=None, **kwargs):
         tri = law._law_si
         if j_tip_J_m2 is None:
             j_tip_J_m2 = law.J_tip_J_m2
-    return Simulation(_core.simulate(model, s, tri, j_tip_J_m2))
+    return Simulation(_core.simulate(model, s, tri, j_tip_J_m2, progress))
+
+
+def identify(files, columns=None, settings=None, progress=None, **kwargs):
+    """The law from load, opening and crack readings alone (no delta_root): identify's joint fit
+    of the records of `files` with the Identify section (settings={"Identify/Starts": 1, ...}),
+    as a scene's identify fits them, on this process. The specimen and material as reduce takes
+    them. Returns the trilinear law (delta1_mm, sigma1_kPa, ..., J_tip_J_m2), its estimates with
+    standard errors, each record's fit (records[k]: model_load_N against load_N, ...), the
+    law's band and the notes; .law is a TrilinearFit for simulate. progress: as simulate's
+    (the fit's progress lines; Ctrl-C is seen there). Nothing is written."""
+    if isinstance(files, (str, bytes)) or hasattr(files, "__fspath__"):
+        files = [files]
+    s = ([f"Test/Files={', '.join(str(f) for f in files)}"] + _columns(columns) +
+         _settings("identify", kwargs, [_SPECIMEN, _MATERIAL, _TEST], settings))
+    fields = _core.identify(s, progress)
+    law_si = fields.pop("law_si")
+    fields["records"] = [Result(r) for r in fields["records"]]
+    out = Identification(fields)
+    law = TrilinearFit({k: fields[k] for k in ("delta1_mm", "sigma1_kPa", "delta2_mm",
+                                                 "sigma2_kPa", "delta_c_mm", "J_tip_J_m2")})
+    law._law_si = law_si
+    out.law = law
+    return out
 
 
 def run_scene(path, set=None, resume=False):

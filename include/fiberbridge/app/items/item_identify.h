@@ -4,6 +4,11 @@
 // it when it ran in the same scene.
 #include "fiberbridge/app/scene/scene_context.h"
 
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
 namespace dealii {
 class ParameterHandler;
 }
@@ -14,6 +19,14 @@ void declare_identify_section(dealii::ParameterHandler& prm);
 void parse_identify_section(dealii::ParameterHandler& prm, SceneParameters& out);
 void check_identify_item(SceneContext& ctx);
 ItemOutcome run_identify_item(const SceneContext& ctx);
+/// identify's joint fit of the scene's records (Test/Files, read as the item reads them) with the
+/// Identify section and its forward model, on this process, writing and keeping nothing: the
+/// Python module's fiberbridge.identify. `progress` gets the fit's progress lines and may throw
+/// to stop it. The records are returned in `records`.
+identify::Identification
+identify_scene_records(const SceneContext& ctx,
+                       const std::function<void(const std::string&)>& progress,
+                       std::shared_ptr<const std::vector<analysis::TestRecord>>& records);
 /// For compare: the identified law's simulations against the first record (identify_check),
 /// added to compare's report.
 void check_identified_against_simulations(const SceneContext& ctx, ItemReport& report);

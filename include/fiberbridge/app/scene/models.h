@@ -9,10 +9,14 @@
 #include "fiberbridge/app/scene/scene_context.h"
 #include "fiberbridge/identify/forward_model.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace fiberbridge::app {
+
+/// A model's progress lines, as the command line prints them to stderr; empty = none.
+using ProgressLines = std::function<void(const std::string&)>;
 
 struct SimulationModel {
   const char* name = nullptr; ///< the Run item, the key of ctx.results and of its summary block
@@ -42,9 +46,11 @@ struct SimulationModel {
   const char* target_key = "Target error";
   /// The model run with a given law and J_tip on the scene's specimen set-up and the model's
   /// section, on this process alone, writing no files and reporting nothing: for items that put
-  /// many laws back in the specimen (the campaign's Fig. 10). nullptr when not built.
-  result::SimulationResult (*simulate)(const SceneContext&, const law::TractionLaw&,
-                                       double j_tip) = nullptr;
+  /// many laws back in the specimen (the campaign's Fig. 10), or for a caller that shows its own
+  /// progress (the Python module): `progress` takes the model's progress lines and may throw to
+  /// stop the run (the model unwinds; nothing was written). nullptr when not built.
+  result::SimulationResult (*simulate)(const SceneContext&, const law::TractionLaw&, double j_tip,
+                                       const ProgressLines& progress) = nullptr;
   /// The model with its section's settings as identify's forward model (Identify/Forward model
   /// = <name>; identify/forward_model.h, docs/design.md section 6, "Forward model of identify").
   /// nullptr: not offered (the beam is identify's own, with the Identify section's beam keys).
