@@ -193,10 +193,12 @@ void refit_initiation(const std::vector<double>& D, std::size_t first_growth,
       "R_energy_readings keeps the windowed slopes");
   if (fit.slope > 0 && !(fit.hinge > out.delta_root[fit.onset]))
     out.notes.push_back(
-        "R at initiation: R rises from the first dissipating reading (delta_root " +
+        "R at initiation: the fit finds no flat part; R rises from the first dissipating reading "
+        "(delta_root " +
         num(out.delta_root[fit.onset] / units::mm) +
-        " mm) on: the law's elastic part ends before the readings resolve it, so J_tip (R while "
-        "delta_root is on that part, seed Eq. 2) is below the first R, " +
+        " mm) on. The law's elastic part (where R = J_tip, seed Eq. 2) ends before that reading, "
+        "or "
+        "spans too few readings to be fitted: J_tip may lie below the first R, " +
         num(fit.j_tip) + " J/m^2, by an amount the record does not hold");
 }
 

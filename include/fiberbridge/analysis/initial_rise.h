@@ -24,7 +24,7 @@ struct InitialRise {
   std::size_t onset = 0; ///< first growth reading with dissipation beyond the noise of D
   std::size_t end = 0;   ///< readings [onset, end) were fitted
   double delta_end = 0;  ///< delta_root of the last fitted reading [m]
-  std::string why;       ///< why it was not fitted, or how it was
+  std::string why;       ///< why it was not fitted (empty when fitted)
   /// The fitted R at notch-root opening delta [J/m^2].
   double R(double delta) const { return j_tip + slope * std::max(0.0, delta - hinge); }
 };
