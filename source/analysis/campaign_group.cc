@@ -176,6 +176,35 @@ std::string single_spoiler(const CampaignGroup& group,
 
 } // namespace
 
+/// The rho_b range from sigma_1 at l_b (Eqs. 13/15, exact governing form), tracheid and bundle
+/// fibers as the seed brackets it; NaN without l_b.
+static void set_bridged_density(GroupEstimate& g, const CampaignOptions& o) {
+  g.rho_low = g.rho_high = NAN;
+  if (std::isfinite(g.l_b) && g.l_b > 0 && g.tri.s1 > 0) {
+    const double r1 = bridged_density(g.tri.s1, o.rho_opening, g.l_b, o.fiber_low,
+                                      BridgingMechanism::governing, false);
+    const double r2 = bridged_density(g.tri.s1, o.rho_opening, g.l_b, o.fiber_high,
+                                      BridgingMechanism::governing, false);
+    g.rho_low = std::min(r1, r2);
+    g.rho_high = std::max(r1, r2);
+  }
+}
+
+void apply_law_shift(GroupEstimate& e, const LawShift& shift, const CampaignOptions& o) {
+  if (!shift.applied || !e.ok || !e.has_law)
+    return;
+  e.tri.d1 += shift.d1;
+  e.tri.s1 += shift.s1;
+  e.tri.d2 += shift.d2;
+  e.tri.s2 += shift.s2;
+  e.tri.dc += shift.dc;
+  e.j_tip += shift.j_tip;
+  e.delta_c = e.tri.dc;
+  e.J1 = e.tri.j1();
+  e.J2 = e.tri.j2();
+  set_bridged_density(e, o);
+}
+
 GroupEstimate estimate_group(const std::vector<CampaignSpecimen>& specimens,
                              const std::vector<std::size_t>& members, const CampaignOptions& o,
                              bool keep_curves) {
@@ -237,14 +266,7 @@ GroupEstimate estimate_group(const std::vector<CampaignSpecimen>& specimens,
     for (auto m : members)
       lbs.push_back(growth_to_opening(specimens[m].curve, fit.law.d1));
     g.l_b = finite_mean(lbs);
-    if (std::isfinite(g.l_b) && g.l_b > 0 && fit.law.s1 > 0) {
-      const double r1 = bridged_density(fit.law.s1, o.rho_opening, g.l_b, o.fiber_low,
-                                        BridgingMechanism::governing, false);
-      const double r2 = bridged_density(fit.law.s1, o.rho_opening, g.l_b, o.fiber_high,
-                                        BridgingMechanism::governing, false);
-      g.rho_low = std::min(r1, r2);
-      g.rho_high = std::max(r1, r2);
-    }
+    set_bridged_density(g, o);
     if (keep_curves) {
       g.curve = curve;
       g.laws = laws;
@@ -371,11 +393,56 @@ std::vector<CampaignGroup> make_campaign_groups(const std::vector<CampaignSpecim
   return groups;
 }
 
+namespace {
+
+/// The group's law corrected by simulation (CampaignOptions::correct_law) as the shift from the
+/// chain's; not applied (with the reason in the notes) when a member has no record or the
+/// correction did not converge.
+LawShift law_correction(const CampaignGroup& group, const std::vector<CampaignSpecimen>& specimens,
+                        const CampaignOptions& o, const std::string& name,
+                        std::vector<std::string>& notes) {
+  LawShift shift;
+  const GroupEstimate& e = group.estimate;
+  if (!o.correct_law || !e.ok || !e.has_law)
+    return shift;
+  std::vector<const CampaignSpecimen*> members;
+  for (auto m : group.members) {
+    if (!specimens[m].record)
+      return shift; // R(delta) tables: nothing to simulate
+    members.push_back(&specimens[m]);
+  }
+  const LawCorrection c = o.correct_law(members, e.tri, e.j_tip);
+  for (const auto& n : c.notes)
+    notes.push_back(name + ": law correction: " + n);
+  if (!c.converged)
+    return shift;
+  shift = {true,
+           c.law.d1 - e.tri.d1,
+           c.law.s1 - e.tri.s1,
+           c.law.d2 - e.tri.d2,
+           c.law.s2 - e.tri.s2,
+           c.law.dc - e.tri.dc,
+           c.j_tip - e.j_tip};
+  notes.push_back(name + ": law corrected by simulation (" + std::to_string(c.simulations) +
+                  " simulations of the members' records; Fit/Model correction): sigma1 " +
+                  fmt(e.tri.s1 / kPa) + " -> " + fmt(c.law.s1 / kPa) + " kPa, sigma2 " +
+                  fmt(e.tri.s2 / kPa) + " -> " + fmt(c.law.s2 / kPa) + " kPa, delta_c " +
+                  fmt(e.tri.dc / mm) + " -> " + fmt(c.law.dc / mm) + " mm, J_tip " + fmt(e.j_tip) +
+                  " -> " + fmt(c.j_tip) +
+                  " J/m^2; the bootstrap samples and the intervals move by the same shift, the "
+                  "Eq. 6 law and its band do not");
+  return shift;
+}
+
+} // namespace
+
 void analyse_campaign_group(CampaignGroup& group, const std::vector<CampaignSpecimen>& specimens,
                             const CampaignOptions& o) {
   group.estimate = estimate_group(specimens, group.members, o, true);
   group.seed = group_seed(o.seed, group.material, group.cycles);
   const std::string name = group.material + " at " + fmt(group.cycles) + " cycles";
+  group.correction = law_correction(group, specimens, o, name, group.notes);
+  apply_law_shift(group.estimate, group.correction, o);
   if (!group.estimate.ok) {
     group.notes.push_back(name + ": no estimate (" + group.estimate.failure + ")");
     if (const std::string culprit = single_spoiler(group, specimens, o); !culprit.empty())
@@ -435,7 +502,8 @@ void analyse_campaign_group(CampaignGroup& group, const std::vector<CampaignSpec
   for (int b = 0; b < o.bootstrap_samples; ++b) {
     for (auto& r : resample)
       r = group.members[pick(rng)];
-    const GroupEstimate e = estimate_group(specimens, resample, o, law);
+    GroupEstimate e = estimate_group(specimens, resample, o, law);
+    apply_law_shift(e, group.correction, o);
     std::array<double, n_group_quantities> q;
     for (std::size_t k = 0; k < n_group_quantities; ++k)
       q[k] = e.ok ? quantity_value(e, static_cast<GroupQuantity>(k)) : NAN;

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <set>
 #include <tuple>
 #include <utility>
@@ -253,6 +254,8 @@ CampaignSpecimen load_campaign_specimen(const CampaignRow& row, const RawRecordO
       if (!rr.delta_root.empty()) {
         s.curve = to_rdelta({rr}, row.file).replicates.front();
         s.has_rdelta = true;
+        s.record = std::make_shared<const TestRecord>(records.front());
+        s.chain = own;
       } else {
         take_ra_estimates(s, rr, raw.estimator, own.reduce.plateau_fraction);
       }

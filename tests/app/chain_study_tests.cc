@@ -115,6 +115,28 @@ TEST(ChainStudyTargets, JtipOfASteepShortLaw) {
       << "J_tip " << j << " against " << jt;
   EXPECT_LE(std::abs(get(c, "G_ss_err_rel")), 0.02) << c.dump();
 }
+// The fit corrected by simulation (Fit/Model correction, on by default where the fit's data are
+// the scene's own records). On the PRF control law the seed's fit has sigma1 +10.2 %: seed Eq. 2's
+// recoverable energy is not the dissipation rate the record holds while the zone develops, and the
+// records' windows add to it (docs/verification.md, "Where sigma1's bias comes from"). Measured
+// after the correction: sigma1 +3.7 %, sigma2 -0.1 %, delta_c -1.6 % (uncorrected +10.2, -2.6,
+// +2.5 %). Bounds: sigma1 6 % (the measured 3.7 % with the run-to-run spread of the chain's
+// automatic choices, and under the uncorrected 10 %), sigma2 and delta_c 2.5 % (under their
+// uncorrected errors); the uncorrected sigma1 at least 7 %, so that the test says the bias it
+// corrects is there.
+TEST(ChainStudyTargets, CorrectionRemovesTheSeedFitsBias) {
+  const Json s = run_chain_study("chain_study_correction", "PRF_c0");
+  ASSERT_TRUE(s.contains("chain_study"));
+  const Json& c = s["chain_study"]["cases"][0];
+  ASSERT_EQ(c["outcome"].get<std::string>(), "recovered") << c.dump();
+  ASSERT_EQ(c["correction"].get<std::string>(), "converged") << c.dump();
+  const double t1 = get(c, "sigma1_true_kPa");
+  EXPECT_GE(get(c, "sigma1_uncorrected_kPa") / t1 - 1, 0.07) << c.dump();
+  EXPECT_LE(std::abs(get(c, "sigma1_err_rel")), 0.06) << c.dump();
+  EXPECT_LE(std::abs(get(c, "sigma2_err_rel")), 0.025) << c.dump();
+  EXPECT_LE(std::abs(get(c, "delta_c_err_rel")), 0.025) << c.dump();
+  expect_targets(c);
+}
 #else
 TEST(ChainStudy, SkippedWithoutTheFem) {
   GTEST_SKIP() << "the FEM is not built";

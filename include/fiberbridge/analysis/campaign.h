@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -101,6 +102,10 @@ struct CampaignSpecimen {
   SteadyState own;                ///< its own steady state (when steady)
   double l_b = NAN;               ///< crack growth to delta = d1 [m] (needs a_mm)
   std::vector<std::string> notes; ///< why not steady, and what else to know
+  /// A raw record or DIC set with delta_root: the record its curve was reduced from and the
+  /// reduction used (the row's overrides in), for the group's correction by simulation.
+  std::shared_ptr<const TestRecord> record;
+  RecordChainOptions chain;
 };
 
 /// A material name as a part of file names: letters, digits, '-' and '_' kept, anything else
@@ -115,6 +120,23 @@ struct CampaignOptions;
 /// The specimen's own steady state (its curve alone, the group's options and its row's
 /// delta_c / J_tip) and l_b; a curve without steady state gets steady = false and a note.
 void assess_campaign_specimen(CampaignSpecimen& s, const CampaignOptions& o);
+
+/// A group's law corrected by simulation (identify/chain_correction.h): the law and J_tip whose
+/// simulated records the group's chain measures as it measured the members' records.
+struct LawCorrection {
+  bool converged = false;
+  law::TrilinearParameters law; ///< SI
+  double j_tip = NAN;
+  int simulations = 0;
+  std::vector<std::string> notes;
+};
+
+/// The shift the correction moves a group's law by (corrected - the chain's), applied to the point
+/// estimate and to every bootstrap sample, so that the interval moves with it.
+struct LawShift {
+  bool applied = false;
+  double d1 = 0, s1 = 0, d2 = 0, s2 = 0, dc = 0, j_tip = 0; ///< SI
+};
 
 /// The settings every group shares (the scene's Data, Fit, Bridging and Campaign sections).
 struct CampaignOptions {
@@ -143,6 +165,13 @@ struct CampaignOptions {
   /// than this many robust standard deviations (1.4826 MAD) and by more than 10 % of the median.
   double outlier_mads = 3.5;
   int law_band_points = 101; ///< points of the law band grid over [0, delta_c]
+  /// Fit/Model correction: given a group's members (each with its record) and the law and J_tip
+  /// the group's chain gave, the law corrected by simulation. Set by the app where the beam is
+  /// built; empty: no correction. Groups whose members are R(delta) tables are never corrected
+  /// (there is no record to simulate).
+  std::function<LawCorrection(const std::vector<const CampaignSpecimen*>& members,
+                              const law::TrilinearParameters& law, double j_tip)>
+      correct_law;
 };
 
 /// The Table 1 quantities of one group, from one set of specimens (the group or a resample).
@@ -212,8 +241,15 @@ struct CampaignGroup {
   /// The law's band on law_delta (the point estimate's grid over [0, delta_c]) [Pa].
   std::vector<double> law_delta, law_lo, law_hi;
   std::vector<std::string> notes;
+  /// The correction by simulation, applied to `estimate` and `samples` (kept with the group for
+  /// --resume and the MPI hand-out: a restored group's recomputed estimate gets it again).
+  LawShift correction;
   bool has_interval() const { return !samples.empty(); }
 };
+
+/// `shift` added to a law estimate: the trilinear law and J_tip, then what follows from them
+/// (delta_c, J1, J2 and the rho_b range at the options' opening).
+void apply_law_shift(GroupEstimate& e, const LawShift& shift, const CampaignOptions& o);
 
 /// The group's seed: the campaign's seed mixed with the group's key (material, cycles) by a
 /// fixed hash, so a group's resamples do not depend on which other groups exist or on the order

@@ -36,6 +36,9 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+#include "items/fit_correction_step.h"
+#endif
 
 namespace fiberbridge::app {
 
@@ -212,6 +215,11 @@ CampaignInputs campaign_inputs(const SceneContext& ctx) {
   in.options.confidence = in.section.confidence;
   in.options.interval = in.section.interval;
   in.options.outlier_mads = in.section.outlier_mads;
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+  // Fit/Model correction: groups of records (raw or DIC sets with delta_root) corrected by
+  // simulation, as a scene's fit is (items/fit_correction_step.h).
+  in.options.correct_law = group_law_correction(ctx, in.options);
+#endif
   // Raw records: read and reduced with the scene's one chain, as `reduce` does (a manifest row's
   // width_mm / arm_thickness_mm / length_mm / a0_mm override its Specimen).
   const auto& t = ctx.parameters().section<TestSection>("Test");
@@ -260,6 +268,7 @@ void run_groups(std::vector<analysis::CampaignGroup>& groups,
   auto finish = [&](std::size_t i) {
     auto& g = groups[i];
     g.estimate = analysis::estimate_group(specimens, g.members, o, true);
+    analysis::apply_law_shift(g.estimate, g.correction, o);
     g.seed = analysis::group_seed(o.seed, g.material, g.cycles);
     if (output_enabled())
       std::cerr << "campaign: resume: group " << g.material << " at " << fmt(g.cycles)
@@ -299,10 +308,11 @@ void run_groups(std::vector<analysis::CampaignGroup>& groups,
       simulation_communicator(), cost);
   for (std::size_t k = 0; k < todo.size(); ++k) {
     auto& g = groups[todo[k]];
-    g.estimate = analysis::estimate_group(specimens, g.members, o, true);
     g.seed = analysis::group_seed(o.seed, g.material, g.cycles);
     campaign_group_from_bytes(results.output[k],
                               "campaign group from rank " + std::to_string(results.rank[k]), g);
+    g.estimate = analysis::estimate_group(specimens, g.members, o, true);
+    analysis::apply_law_shift(g.estimate, g.correction, o);
   }
   for (std::size_t i = 0; i < groups.size(); ++i) {
     if (restored[i])

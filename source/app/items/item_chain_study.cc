@@ -92,6 +92,20 @@ void read_recovered(const std::string& summary_path, ChainRow& row) {
     row.sigma1 = get(s["trilinear"], "sigma1_kPa");
     row.sigma2 = get(s["trilinear"], "sigma2_kPa");
   }
+  // The fit corrected by simulation (Fit/Model correction) is what the chain hands on: the
+  // recovery is its, and the seed's fit stays beside.
+  if (s.contains("fit_correction")) {
+    row.uncorrected = {row.j_tip, row.delta_c, row.sigma1, row.sigma2};
+    const bool converged = s["fit_correction"].value("converged", false);
+    row.correction = converged ? "converged" : "not converged";
+    if (converged) {
+      const Json& c = s["trilinear_corrected"];
+      row.j_tip = get(c, "J_tip_J_m2");
+      row.delta_c = get(c, "delta_c_mm");
+      row.sigma1 = get(c, "sigma1_kPa");
+      row.sigma2 = get(c, "sigma2_kPa");
+    }
+  }
 }
 
 /// The fitted trilinear (0,0) (d1,s1) (d2,s2) (dc,0) at delta [kPa, mm].

@@ -9,6 +9,10 @@
 #include "fiberbridge/app/outputs/extraction_writers.h"
 #include "fiberbridge/app/scene/scene_reader.h"
 #include "fiberbridge/app/scene/section.h"
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+#include "items/fit_correction_step.h"
+#include "outputs/fit_correction_writers.h"
+#endif
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
@@ -70,8 +74,12 @@ struct DataSection : ExtractionOptions {
   }
 };
 
-/// Fit: the trilinear breakpoints, fixed or free within bounds.
+/// Fit: the trilinear breakpoints, fixed or free within bounds, and the correction of the chain's
+/// bias by simulation (identify/chain_correction.h).
+/// Its correction keys are read where they are used (items/fit_correction_step.h): the stored
+/// section stays analysis::FitOptions, which the campaign and the Python module read too.
 struct FitSection : FitOptions {
+
   static void declare_parameters(dealii::ParameterHandler& prm) {
     prm.declare_entry("Delta 1", "0.1", Double(0), "First breakpoint d1 in mm (seed: 0.1).");
     prm.declare_entry("Delta 2", "1.0", Double(0), "Second breakpoint d2 in mm (seed: 1.0).");
@@ -81,6 +89,20 @@ struct FitSection : FitOptions {
     prm.declare_entry("Delta 1 maximum", "0.5", Double(0), "Upper bound of d1 in mm when free.");
     prm.declare_entry("Delta 2 maximum", "0", Double(0),
                       "Upper bound of d2 in mm when free; 0 means delta_c/2.");
+    prm.declare_entry(
+        "Model correction", "auto", dealii::Patterns::Selection("auto|none|beam"),
+        "Remove the measuring chain's bias by simulating the test: the fitted law is run in the "
+        "beam at the records' openings, the same chain measures the simulated records, and the "
+        "law is moved by the difference until the chain gives back what it gave on the records "
+        "(seed Eq. 2's recoverable energy is not the dissipation a test measures while the zone "
+        "develops). auto: where the fit's data are this scene's records through reduce; none: "
+        "the seed's fit alone; beam: as auto, an error where it cannot run.");
+    prm.declare_entry("Correction iterations", "8", Integer(1, 100),
+                      "Simulations at most before the correction gives up (with a note).");
+    prm.declare_entry("Correction tolerance", "0.01", Double(1e-6, 0.5),
+                      "Converged when the chain on the simulated records matches the records' "
+                      "estimate within this fraction (J_tip of itself, stresses of the larger "
+                      "stress, openings of delta_c).");
   }
   void parse_parameters(dealii::ParameterHandler& prm) {
     d1 = prm.get_double("Delta 1") * mm;
@@ -191,6 +213,22 @@ RankOptions rank_options(const SceneContext& ctx) {
   return o;
 }
 
+/// Is the extraction's R(delta_root) this scene's own records' (reduce's, no Data/File)? Only
+/// then can the fit's correction simulate the records it came from.
+[[maybe_unused]] bool extraction_of_own_records(const SceneContext& ctx) {
+  return ctx.parameters().entry("Data/File").empty() && ctx.rdelta_root != nullptr;
+}
+
+/// Can the fit be corrected by simulation in this scene (checked before anything runs)?
+bool correction_possible(const SceneContext& ctx) {
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+  return ctx.run_items.count("reduce") > 0 && ctx.parameters().entry("Data/File").empty();
+#else
+  (void)ctx;
+  return false;
+#endif
+}
+
 } // namespace
 
 void declare_data_section(dealii::ParameterHandler& prm) {
@@ -245,6 +283,11 @@ ItemOutcome run_extract_item(const SceneContext& ctx) {
 void check_fit_item(SceneContext& ctx) {
   check_extract_item(ctx); // fit implies extract
   ctx.parameters().section<FitOptions>("Fit");
+  if (ctx.parameters().entry("Fit/Model correction") == "beam" && !correction_possible(ctx))
+    throw InputError(
+        ctx.scene_file +
+        ": Fit/Model correction = beam needs the fit's data to be this scene's "
+        "records through reduce (no Data/File) and a build with the beam and identify");
 }
 
 ItemOutcome run_fit_item(const SceneContext& ctx) {
@@ -254,9 +297,22 @@ ItemOutcome run_fit_item(const SceneContext& ctx) {
   const FitOptions& o = ctx.parameters().section<FitOptions>("Fit");
   const auto fit = run_trilinear_fit(extraction, o, ctx.output_dir, out.report);
   // The extracted law is handed to the simulations without being retyped
-  // (docs/design.md section 5).
-  out.law = CrackLaw{std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(fit.law)),
-                     extraction.steady.j_tip, LawSource::fit};
+  // (docs/design.md section 5); corrected by simulation where the scene asks and can.
+  law::TrilinearParameters handed = fit.law;
+  double handed_j_tip = extraction.steady.j_tip;
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+  if (ctx.parameters().entry("Fit/Model correction") != "none" && ctx.reduced &&
+      extraction_of_own_records(ctx)) {
+    const auto c = correct_fit_by_simulation(ctx, extraction, o, fit, fit_correction_settings(ctx));
+    write_fit_correction(c, ctx.output_dir, out.report);
+    if (c.converged) {
+      handed = c.corrected.law;
+      handed_j_tip = c.corrected.j_tip;
+    }
+  }
+#endif
+  out.law = CrackLaw{std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(handed)),
+                     handed_j_tip, LawSource::fit};
   plot_extraction(extraction, &fit, ctx.output_dir, out.report);
   return out;
 }

@@ -22,6 +22,13 @@ struct ChainRow {
   // Truth (from the case's Cohesive law) and recovered (summary.json of the chain's scene).
   double j_tip_true = 0, g_ss_true = 0, delta_c_true = 0, sigma1_true = 0, sigma2_true = 0;
   double j_tip = 0, g_ss = 0, delta_c = 0, sigma1 = 0, sigma2 = 0; ///< NaN when refused
+  /// The fit's correction by simulation (Fit/Model correction): "converged" (the recovered values
+  /// above are the corrected ones), "not converged" (they are the seed's fit, the reason in the
+  /// chain's summary.json) or "" (not run). `uncorrected`: the seed's fit and J_tip.
+  std::string correction;
+  struct Uncorrected {
+    double j_tip = NAN, delta_c = NAN, sigma1 = NAN, sigma2 = NAN;
+  } uncorrected;
   /// || fitted trilinear - true law ||_2 / || true law ||_2 over [0, true delta_c].
   double law_l2_rel = 0;
   bool targets_met = false;

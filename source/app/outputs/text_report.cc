@@ -63,6 +63,24 @@ std::string text_report(const Json& s) {
       << num(t, "J1_J_m2") << ", J2 " << num(t, "J2_J_m2") << " J/m^2 (rms residual "
       << num(t, "rms_residual_kPa", 3) << " kPa)\n";
   }
+  if (s.contains("fit_correction")) {
+    const auto& c = s["fit_correction"];
+    if (c.value("converged", false)) {
+      const auto& t = c["corrected"];
+      r << "fit corrected by simulation (" << c["simulations"].get<int>()
+        << " beam runs of the records): sigma1 " << num(t, "sigma1_kPa") << " kPa, sigma2 "
+        << num(t, "sigma2_kPa") << " kPa, delta_c " << num(t, "delta_c_mm") << " mm, J_tip "
+        << num(t, "J_tip_J_m2") << " J/m^2 (the law handed on; fit_correction.csv)\n";
+    } else {
+      // The correction's last note is its reason, worded "not corrected: why".
+      std::string why = c["notes"].empty() ? std::string("see summary.json")
+                                           : c["notes"].back().get<std::string>();
+      const std::string lead = "not corrected: ";
+      if (why.rfind(lead, 0) == 0)
+        why = why.substr(lead.size());
+      r << "fit not corrected: " << why << " (the seed's fit is handed on)\n";
+    }
+  }
   if (s.contains("ranking")) {
     r << "durability ranking (most durable first):";
     for (const auto& m : s["ranking"])

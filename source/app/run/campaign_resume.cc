@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 const char* group_magic = "fiberbridge campaign group";
 const char* simulation_magic = "fiberbridge campaign simulation";
 // Raise when the bytes of a group or a simulation change.
-constexpr std::uint32_t group_version = 1;
+constexpr std::uint32_t group_version = 2;
 constexpr std::uint32_t simulation_version = 1;
 
 std::string hex(std::uint64_t h) {
@@ -126,6 +126,10 @@ std::string campaign_group_bytes(const analysis::CampaignGroup& g) {
   w.put(g.law_lo);
   w.put(g.law_hi);
   w.put(g.notes);
+  const auto& c = g.correction;
+  w.put(static_cast<std::uint8_t>(c.applied ? 1 : 0));
+  for (double v : {c.d1, c.s1, c.d2, c.s2, c.dc, c.j_tip})
+    w.put(v);
   return w.finish();
 }
 
@@ -139,6 +143,10 @@ void campaign_group_from_bytes(const std::string& bytes, const std::string& sour
   r.get(g.law_lo);
   r.get(g.law_hi);
   r.get(g.notes);
+  auto& c = g.correction;
+  c.applied = r.get<std::uint8_t>() != 0;
+  for (double* v : {&c.d1, &c.s1, &c.d2, &c.s2, &c.dc, &c.j_tip})
+    r.get(*v);
   r.expect_end();
 }
 

@@ -1,0 +1,106 @@
+// The fit corrected by simulation as a step of the scene's `fit` (fit_correction_step.h).
+#include "items/fit_correction_step.h"
+
+#include "fiberbridge/analysis/record_reduction.h"
+#include "fiberbridge/app/scene/step_outcomes.h"
+#include "fiberbridge/beam/dcb_beam.h"
+#include "fiberbridge/identify/forward_model.h"
+
+#include "fiberbridge/core/error.h"
+
+#include <memory>
+#include <string>
+
+namespace fiberbridge::app {
+
+identify::ChainCorrection correct_fit_by_simulation(const SceneContext& ctx,
+                                                    const analysis::ExtractionOutcome& extraction,
+                                                    const analysis::FitOptions& fit_options,
+                                                    const analysis::TrilinearFit& fit,
+                                                    const identify::ChainCorrectionSettings& s) {
+  const analysis::RecordChainOptions chain_options = ctx.record_chain();
+  // The Data section as extract read it; only its data are replaced by the simulated records'.
+  const auto& data = ctx.parameters().section<analysis::ExtractionOptions>("Data");
+  const identify::MeasuringChain chain = [&](const std::vector<analysis::TestRecord>& records) {
+    std::vector<analysis::ReducedRecord> reduced;
+    for (const auto& r : records)
+      reduced.push_back(analysis::reduce_record(r, chain_options.specimen, chain_options.reduce));
+    analysis::ExtractionOptions o = data;
+    o.data_file = "the records simulated by the fit's correction";
+    o.data =
+        std::make_shared<const analysis::RDeltaData>(analysis::to_rdelta(reduced, o.data_file));
+    const analysis::ExtractionOutcome e = analysis::extract_law(o);
+    return identify::ChainEstimate{analysis::fit_extracted_law(e, fit_options).law, e.steady.j_tip};
+  };
+  const SpecimenSetup setup = ctx.specimen_setup();
+  const auto model =
+      identify::beam_forward_model(ctx.parameters().section<beam::BeamParameters>("Beam"));
+  const auto& records = ctx.reduced->records;
+  return identify::correct_chain(
+      records, std::vector<specimen::Specimen>(records.size(), setup.specimen), setup.material,
+      {fit.law, extraction.steady.j_tip}, chain, model, s);
+}
+
+std::string fit_correction_mode(const SceneContext& ctx) {
+  return ctx.parameters().entry("Fit/Model correction");
+}
+
+identify::ChainCorrectionSettings fit_correction_settings(const SceneContext& ctx) {
+  // Validated by the Fit section's patterns when the scene was read.
+  identify::ChainCorrectionSettings s;
+  s.max_iterations = std::stoi(ctx.parameters().entry("Fit/Correction iterations"));
+  s.tolerance = std::stod(ctx.parameters().entry("Fit/Correction tolerance"));
+  return s;
+}
+
+std::function<analysis::LawCorrection(const std::vector<const analysis::CampaignSpecimen*>&,
+                                      const law::TrilinearParameters&, double)>
+group_law_correction(const SceneContext& ctx, const analysis::CampaignOptions& options) {
+  if (fit_correction_mode(ctx) == "none")
+    return {};
+  const identify::ChainCorrectionSettings settings = fit_correction_settings(ctx);
+  const specimen::Material material = ctx.material();
+  const identify::ForwardModel model =
+      identify::beam_forward_model(ctx.parameters().section<beam::BeamParameters>("Beam"));
+  analysis::CampaignOptions plain = options;
+  plain.correct_law = {};
+  return [settings, material, model,
+          plain](const std::vector<const analysis::CampaignSpecimen*>& members,
+                 const law::TrilinearParameters& law, double j_tip) {
+    std::vector<analysis::TestRecord> records;
+    std::vector<specimen::Specimen> specimens;
+    for (const auto* m : members) {
+      records.push_back(*m->record);
+      specimens.push_back(m->chain.specimen);
+    }
+    // The group's chain on simulated records: each reduced as its row's record was, then the
+    // group's own average, steady state, Eq. 6 and fit (analysis::estimate_group).
+    const identify::MeasuringChain chain = [&](const std::vector<analysis::TestRecord>& sims) {
+      std::vector<analysis::CampaignSpecimen> simulated;
+      std::vector<std::size_t> all;
+      for (std::size_t i = 0; i < sims.size(); ++i) {
+        analysis::CampaignSpecimen c = *members[i];
+        const auto& o = c.chain;
+        const analysis::ReducedRecord rr = analysis::reduce_record(sims[i], o.specimen, o.reduce);
+        c.curve = analysis::to_rdelta({rr}, c.row.file).replicates.front();
+        simulated.push_back(std::move(c));
+        all.push_back(i);
+      }
+      const analysis::GroupEstimate e = analysis::estimate_group(simulated, all, plain, false);
+      if (!e.ok || !e.has_law)
+        throw ComputationError("the group's chain: " + e.failure);
+      return identify::ChainEstimate{e.tri, e.j_tip};
+    };
+    const identify::ChainCorrection c =
+        identify::correct_chain(records, specimens, material, {law, j_tip}, chain, model, settings);
+    analysis::LawCorrection out;
+    out.converged = c.converged;
+    out.law = c.corrected.law;
+    out.j_tip = c.corrected.j_tip;
+    out.simulations = static_cast<int>(c.steps.size());
+    out.notes = c.notes;
+    return out;
+  };
+}
+
+} // namespace fiberbridge::app
