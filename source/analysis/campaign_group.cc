@@ -203,6 +203,13 @@ void apply_law_shift(GroupEstimate& e, const LawShift& shift, const CampaignOpti
   e.J1 = e.tri.j1();
   e.J2 = e.tri.j2();
   set_bridged_density(e, o);
+  // A resample whose law the shift carries out of the trilinear laws is a failed sample, not a
+  // law (counted in the group's note as any other).
+  const auto& t = e.tri;
+  if (!(t.d1 > 0 && t.d1 < t.d2 && t.d2 < t.dc && t.s1 > 0 && t.s2 > 0 && e.j_tip > 0)) {
+    e.ok = false;
+    e.failure = "the correction's shift leaves no trilinear law for this resample";
+  }
 }
 
 GroupEstimate estimate_group(const std::vector<CampaignSpecimen>& specimens,
@@ -495,7 +502,9 @@ void analyse_campaign_group(CampaignGroup& group, const std::vector<CampaignSpec
     const int nb = std::max(2, o.law_band_points);
     group.law_delta.resize(nb);
     for (int i = 0; i < nb; ++i)
-      group.law_delta[i] = group.estimate.delta_c * i / (nb - 1);
+      // The Eq. 6 law's own grid: its delta_c before the correction's shift (the band is of the
+      // Eq. 6 law, which the correction does not move).
+      group.law_delta[i] = (group.estimate.delta_c - group.correction.dc) * i / (nb - 1);
   }
   std::vector<std::vector<double>> band(group.law_delta.size());
   group.samples.reserve(o.bootstrap_samples);

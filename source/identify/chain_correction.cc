@@ -1,6 +1,7 @@
 // The chain corrected by simulating the test it measured (identify/chain_correction.h).
 #include "fiberbridge/identify/chain_correction.h"
 
+#include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 
@@ -21,22 +22,38 @@ struct PathState {
   double opening, load, a, delta_root;
 };
 
-/// The simulation as the machine sees it: the unloaded specimen, then each critical state whose
-/// opening exceeds every earlier one. A state that falls back (snap-back) is the state the
-/// machine jumps to at the earlier maximum, so it replaces that entry.
+/// The simulation as the machine sees it: the unloaded specimen, then the critical states in
+/// order while the opening grows. A state whose opening falls below the largest so far (snap-back)
+/// is passed at constant opening: the machine holds that opening while the load drops, so the path
+/// goes straight down from the state at the maximum to the returning branch's state at the same
+/// opening (interpolated between the states that bracket it), and on from there.
 std::vector<PathState> machine_path(const result::SimulationResult& sim) {
   std::vector<PathState> path;
+  bool falling_back = false;
+  PathState previous{};
   for (const auto& p : sim.rcurve) {
     if (!std::isfinite(p.load_point_opening) || !std::isfinite(p.load) || !std::isfinite(p.a))
       continue;
-    const double root = std::isfinite(p.delta_root) ? p.delta_root : 0.0;
+    const PathState s{p.load_point_opening, p.load, p.a,
+                      std::isfinite(p.delta_root) ? p.delta_root : 0.0};
     if (path.empty())
       path.push_back({0.0, 0.0, p.a, 0.0}); // elastic from the origin to initiation
-    const PathState s{p.load_point_opening, p.load, p.a, root};
-    if (s.opening > path.back().opening)
+    const double top = path.back().opening;
+    if (s.opening > top) {
+      if (falling_back) {
+        // Back past the maximum: the returning branch's state at it, at the same opening as the
+        // state before the jump (state_at takes the latter at that opening, the former above).
+        const double w = (top - previous.opening) / (s.opening - previous.opening);
+        const auto mix = [w](double x, double y) { return (1 - w) * x + w * y; };
+        path.push_back({top, mix(previous.load, s.load), mix(previous.a, s.a),
+                        mix(previous.delta_root, s.delta_root)});
+        falling_back = false;
+      }
       path.push_back(s);
-    else if (path.size() > 1)
-      path.back() = {path.back().opening, s.load, s.a, s.delta_root};
+    } else if (path.size() > 1) {
+      falling_back = true;
+    }
+    previous = s;
   }
   return path;
 }
@@ -49,6 +66,8 @@ PathState state_at(const std::vector<PathState>& path, double u) {
   if (hi == path.begin())
     return path.front();
   const PathState &b = *hi, &a = *(hi - 1);
+  if (!(b.opening > a.opening))
+    return b; // u at a jump: the state before it (the first entry at that opening)
   const double w = (u - a.opening) / (b.opening - a.opening);
   const auto mix = [w](double x, double y) { return (1 - w) * x + w * y; };
   return {u, mix(a.load, b.load), mix(a.a, b.a), mix(a.delta_root, b.delta_root)};
@@ -104,7 +123,8 @@ analysis::TestRecord simulated_record(const analysis::TestRecord& measured,
   r.name = measured.name;
   r.source = measured.source + " (simulated)";
   if (path.size() < 2)
-    return r;
+    throw ComputationError("the forward model gave no critical state for record '" + measured.name +
+                           "' (the crack did not start)");
   // The crack column as the record has it: a new value on the rows where the record makes a
   // new reading, the last one repeated where the record repeats its own, none where it has none
   // (the reduction's windows see the same readings).
@@ -191,25 +211,40 @@ ChainCorrection correct_chain(const std::vector<analysis::TestRecord>& records,
     return to_vec(chain(simulated));
   };
 
+  if (settings.max_iterations < 1) {
+    out.notes.push_back("not corrected: Correction iterations must be at least 1");
+    return out;
+  }
+  // One simulation of p and the chain on it, recorded as a step; false (with the reason in the
+  // notes, and the step's own notes before it) when the forward model or the chain fails.
+  const auto step = [&](const Vec& p, Vec& c) {
+    std::vector<std::string> step_notes;
+    try {
+      c = chain_on_simulation(p, step_notes);
+    } catch (const std::exception& e) {
+      out.notes.insert(out.notes.end(), step_notes.begin(), step_notes.end());
+      out.notes.push_back("not corrected: the simulation of " + describe(from_vec(p)) +
+                          " or the chain on its records failed: " + e.what());
+      return false;
+    }
+    // A step's notes (rows past the simulation's end) are said once, as they first appear.
+    for (const auto& n : step_notes)
+      if (std::find(out.notes.begin(), out.notes.end(), n) == out.notes.end())
+        out.notes.push_back(n);
+    out.steps.push_back({from_vec(p), from_vec(c), mismatch(c, m)});
+    return true;
+  };
+
   Vec p = m;
   std::vector<Vec> ps, cs; // every law simulated and the chain on its records
   int worse = 0;
   for (int k = 0; k < settings.max_iterations; ++k) {
     Vec c;
-    std::vector<std::string> step_notes;
-    try {
-      c = chain_on_simulation(p, step_notes);
-    } catch (const std::exception& e) {
-      out.notes.push_back("not corrected: the chain failed on the records simulated with " +
-                          describe(from_vec(p)) + ": " + e.what());
+    if (!step(p, c))
       return out;
-    }
-    const double mis = mismatch(c, m);
-    out.steps.push_back({from_vec(p), from_vec(c), mis});
+    const double mis = out.steps.back().mismatch;
     ps.push_back(p);
     cs.push_back(c);
-    if (k == 0)
-      out.notes.insert(out.notes.end(), step_notes.begin(), step_notes.end());
     if (mis <= settings.tolerance) {
       out.converged = true;
       out.corrected = from_vec(p);
@@ -241,13 +276,16 @@ ChainCorrection correct_chain(const std::vector<analysis::TestRecord>& records,
     p = next;
   }
   // The chain's automatic choices (windows, hinge, delta_c) move in steps as the law changes, so
-  // C(p) is piecewise smooth and the iterates can alternate around a fixed point that no single
-  // law hits within the tolerance. The mean of the trailing iterates (from the third on) then
-  // stands for it when the chain's mean over them matches the records' estimate.
+  // C(p) is piecewise smooth and the iterates can alternate about a fixed point that no single
+  // law hits within the tolerance. The mean of the trailing iterates (from the third on) whose
+  // chain results average to the records' estimate then stands for it, if the chain run on that
+  // mean law itself lands within the chain's own steps there (its spread over those iterates,
+  // not above 5 tolerances): the law is found to the chain's resolution, and the note says how
+  // fine that is.
   const std::size_t n = ps.size();
   double best = std::numeric_limits<double>::infinity();
   std::size_t best_from = n;
-  Vec best_p{};
+  Vec best_p{}, best_c{};
   for (std::size_t from = 2; from + 2 <= n; ++from) {
     Vec pm{}, cm{};
     for (std::size_t j = from; j < n; ++j)
@@ -260,21 +298,31 @@ ChainCorrection correct_chain(const std::vector<analysis::TestRecord>& records,
       best = mis;
       best_from = from;
       best_p = pm;
+      best_c = cm;
     }
   }
   if (best <= settings.tolerance) {
-    out.converged = true;
-    out.corrected = from_vec(best_p);
-    double spread = 0;
+    double jitter = 0;
     for (std::size_t j = best_from; j < n; ++j)
-      spread = std::max(spread, mismatch(ps[j], best_p));
-    out.notes.push_back("the chain's estimate moves in steps near the fixed point (its automatic "
-                        "windows and delta_c): the corrected law is the mean of the last " +
-                        std::to_string(n - best_from) +
-                        " laws simulated, which the chain measures "
-                        "on average within " +
-                        fmt(best) + " of the records' estimate; they spread by " + fmt(spread) +
-                        " about it");
+      jitter = std::max(jitter, mismatch(cs[j], best_c));
+    Vec c;
+    if (!step(best_p, c))
+      return out;
+    const double mis = out.steps.back().mismatch;
+    if (mis <= std::max(settings.tolerance, jitter) && jitter <= 5 * settings.tolerance) {
+      out.converged = true;
+      out.corrected = from_vec(best_p);
+      out.notes.push_back(
+          "the chain's estimate moves in steps of up to " + fmt(jitter) +
+          " near the fixed point (its automatic windows and delta_c), more than the tolerance " +
+          fmt(settings.tolerance) + ": the corrected law is the mean of the last " +
+          std::to_string(n - best_from) + " laws simulated, on which the chain gives " + fmt(mis) +
+          " from the records' estimate; the law is found to that resolution");
+      return out;
+    }
+    out.notes.push_back("not corrected: the chain's steps near the fixed point (" + fmt(jitter) +
+                        ") leave the mean of the last laws simulated at " + fmt(mis) +
+                        " from the records' estimate");
     return out;
   }
   out.notes.push_back("not corrected: no fixed point within " +

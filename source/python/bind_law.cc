@@ -9,6 +9,9 @@
 #include "fiberbridge/analysis/rdelta_data.h"
 #include "fiberbridge/analysis/record_reduction.h"
 #include "fiberbridge/app/scene/step_outcomes.h"
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+#include "fiberbridge/app/items/fit_correction_step.h"
+#endif
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 
@@ -150,6 +153,47 @@ void bind_law(py::module_& m) {
       },
       py::arg("extraction"), py::arg("settings"),
       "The trilinear fit of the Eq. 6 law, area G_ss - J_tip, with the Fit section's keys.");
+
+#ifdef FIBERBRIDGE_HAVE_IDENTIFY
+  m.def(
+      "correct_fit",
+      [](const std::shared_ptr<analysis::ExtractionOutcome>& e,
+         const std::shared_ptr<app::ReduceOutcome>& reduction, const std::vector<double>& law_si,
+         const std::vector<std::string>& settings) {
+        identify::ChainCorrection c;
+        {
+          py::gil_scoped_release free;
+          // The reduction's, extraction's and fit's settings together: the chain as the scene
+          // runs it (reduce, extract, fit), with the reduction's records handed on as reduce does.
+          app::SceneContext ctx = call_context("fiberbridge.fit_trilinear", settings, "fit");
+          ctx.reduced = reduction;
+          analysis::TrilinearFit fit;
+          fit.law = {law_si.at(0), law_si.at(1), law_si.at(2), law_si.at(3), law_si.at(4)};
+          c = app::correct_fit_by_simulation(ctx, *e,
+                                             ctx.parameters().section<analysis::FitOptions>("Fit"),
+                                             fit, app::fit_correction_settings(ctx));
+        }
+        py::dict d;
+        d["converged"] = c.converged;
+        d["simulations"] = c.steps.size();
+        d["forward_time_s"] = c.forward_time_s;
+        d["notes"] = c.notes;
+        if (c.converged) {
+          const auto& t = c.corrected.law;
+          d["law_si"] = std::vector<double>{t.d1, t.s1, t.d2, t.s2, t.dc};
+          d["J_tip_J_m2"] = c.corrected.j_tip;
+          d["delta1_mm"] = t.d1 / mm;
+          d["sigma1_kPa"] = t.s1 / kPa;
+          d["delta2_mm"] = t.d2 / mm;
+          d["sigma2_kPa"] = t.s2 / kPa;
+          d["delta_c_mm"] = t.dc / mm;
+        }
+        return d;
+      },
+      py::arg("extraction"), py::arg("reduction"), py::arg("law_si"), py::arg("settings"),
+      "The fit corrected by simulation (Fit/Model correction): the beam runs the reduction's "
+      "records with the law until the same chain gives back what it gave on them.");
+#endif
 }
 
 } // namespace fiberbridge::python

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 
 using namespace fiberbridge;
 using namespace fiberbridge::analysis;
@@ -605,4 +606,75 @@ TEST(CampaignFiles, GroupFileStemIsTheMaterialAsAFileNamePartAndTheCycles) {
   EXPECT_EQ(analysis::group_file_stem("PVA control", 0), "PVA_control_c0");
   EXPECT_EQ(analysis::group_file_stem("PRF/wet", 12.5), "PRF_wet_c12.5");
   EXPECT_EQ(analysis::group_file_stem("EPI", 100000), "EPI_c1e+05") << "cycles as fmt prints them";
+}
+
+// The group's law corrected by simulation (CampaignOptions::correct_law; the app's is the beam,
+// docs/design.md "The fit corrected by simulation"): the shift it finds moves the point estimate
+// and every bootstrap sample alike, so the interval moves with it, and J1, J2 follow the shifted
+// law; the Eq. 6 law's band does not move. A group of R(delta) tables has no record to simulate
+// and is never corrected. Exact to round-off: every sample is shifted by the same amount, so a
+// Student-t interval's centre moves by it and its half-width not at all.
+TEST(CampaignCorrection, TheShiftMovesTheEstimateAndEveryBootstrapSample) {
+  SyntheticCampaignOptions so;
+  const auto truth = table1_truth(read_property_table(table1));
+  const std::string m = write_synthetic_campaign(scratch("correction").string(), truth, so);
+  CampaignOptions o;
+  o.bootstrap_samples = 50;
+  const CampaignResult plain = analyse_campaign(read_campaign_manifest(m), {}, o, {"DF"});
+  int calls = 0;
+  CampaignOptions oc = o;
+  oc.correct_law = [&calls](const std::vector<const CampaignSpecimen*>&,
+                            const law::TrilinearParameters& law, double j_tip) {
+    ++calls;
+    LawCorrection c;
+    c.converged = true;
+    c.law = law;
+    c.law.s1 += 10 * units::kPa;
+    c.law.s2 -= 5 * units::kPa;
+    c.j_tip = j_tip + 3;
+    c.simulations = 2;
+    return c;
+  };
+  // R(delta) tables: not corrected.
+  CampaignGroup tables = make_campaign_groups(plain.specimens).front();
+  analyse_campaign_group(tables, plain.specimens, oc);
+  EXPECT_EQ(calls, 0);
+  EXPECT_FALSE(tables.correction.applied);
+  // The same specimens as if they came from records.
+  auto specimens = plain.specimens;
+  for (auto& s : specimens)
+    s.record = std::make_shared<const TestRecord>();
+  CampaignGroup g = make_campaign_groups(specimens).front();
+  analyse_campaign_group(g, specimens, oc);
+  const CampaignGroup& p = plain.groups.front();
+  ASSERT_EQ(calls, 1);
+  ASSERT_TRUE(g.correction.applied);
+  EXPECT_NEAR(g.estimate.tri.s1 - p.estimate.tri.s1, 10 * units::kPa, 1e-6);
+  EXPECT_NEAR(g.estimate.tri.s2 - p.estimate.tri.s2, -5 * units::kPa, 1e-6);
+  EXPECT_NEAR(g.estimate.j_tip - p.estimate.j_tip, 3, 1e-9);
+  EXPECT_NEAR(g.estimate.J1, g.estimate.tri.j1(), 1e-9);
+  EXPECT_NEAR(g.estimate.J2, g.estimate.tri.j2(), 1e-9);
+  EXPECT_EQ(g.estimate.G_ss, p.estimate.G_ss);
+  const auto s1 = static_cast<std::size_t>(GroupQuantity::sigma1);
+  EXPECT_NEAR(g.ci[s1].lo - p.ci[s1].lo, 10, 1e-6); // kPa
+  EXPECT_NEAR(g.ci[s1].hi - p.ci[s1].hi, 10, 1e-6);
+  EXPECT_EQ(g.law_lo, p.law_lo);
+  EXPECT_EQ(g.law_hi, p.law_hi);
+  EXPECT_TRUE(std::any_of(g.notes.begin(), g.notes.end(), [](const std::string& n) {
+    return n.find("law corrected by simulation") != std::string::npos;
+  }));
+  // A correction that did not converge leaves the group as the chain gave it, with its notes.
+  oc.correct_law = [](const std::vector<const CampaignSpecimen*>&, const law::TrilinearParameters&,
+                      double) {
+    LawCorrection c;
+    c.notes = {"not corrected: no fixed point"};
+    return c;
+  };
+  CampaignGroup n = make_campaign_groups(specimens).front();
+  analyse_campaign_group(n, specimens, oc);
+  EXPECT_FALSE(n.correction.applied);
+  EXPECT_EQ(n.estimate.tri.s1, p.estimate.tri.s1);
+  EXPECT_TRUE(std::any_of(n.notes.begin(), n.notes.end(), [](const std::string& x) {
+    return x.find("no fixed point") != std::string::npos;
+  }));
 }

@@ -62,9 +62,10 @@ struct ChainCorrection {
 /// The records a test of `sim` would have written, row by row at `measured`'s openings (and
 /// times): load, crack length (only on the rows where `measured` has a reading), delta_root (where
 /// `measured` has it), each linear in the opening between the simulation's states. The machine
-/// never unloads: a state whose opening falls below an earlier one replaces the earlier one (the
-/// snap-back jump). Before the first critical state the specimen is elastic: load and opening
-/// from the origin. Rows past the simulation's last opening are dropped (a note says how many).
+/// never unloads: through a snap-back it holds the largest opening while the load drops to the
+/// returning branch's state at that opening. Before the first critical state the specimen is
+/// elastic: load and opening from the origin. Rows past the simulation's last opening are dropped
+/// (a note says how many). Throws ComputationError when the simulation has no critical state.
 analysis::TestRecord simulated_record(const analysis::TestRecord& measured,
                                       const result::SimulationResult& sim,
                                       std::vector<std::string>& notes);

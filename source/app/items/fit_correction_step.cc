@@ -1,5 +1,5 @@
 // The fit corrected by simulation as a step of the scene's `fit` (fit_correction_step.h).
-#include "items/fit_correction_step.h"
+#include "fiberbridge/app/items/fit_correction_step.h"
 
 #include "fiberbridge/analysis/record_reduction.h"
 #include "fiberbridge/app/scene/step_outcomes.h"
@@ -8,6 +8,7 @@
 
 #include "fiberbridge/core/error.h"
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -71,7 +72,12 @@ group_law_correction(const SceneContext& ctx, const analysis::CampaignOptions& o
     std::vector<specimen::Specimen> specimens;
     for (const auto* m : members) {
       records.push_back(*m->record);
-      specimens.push_back(m->chain.specimen);
+      // a0: the record's first crack reading (correct_chain), else the row's or the scene's a0
+      // for records without readings, as the reduction took it.
+      specimen::Specimen sp = m->chain.specimen;
+      if (!std::isfinite(sp.initial_crack))
+        sp.initial_crack = m->chain.reduce.initial_crack_without_readings;
+      specimens.push_back(sp);
     }
     // The group's chain on simulated records: each reduced as its row's record was, then the
     // group's own average, steady state, Eq. 6 and fit (analysis::estimate_group).

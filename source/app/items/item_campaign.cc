@@ -37,7 +37,7 @@
 #include <memory>
 #include <sstream>
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
-#include "items/fit_correction_step.h"
+#include "fiberbridge/app/items/fit_correction_step.h"
 #endif
 
 namespace fiberbridge::app {

@@ -10,7 +10,7 @@
 #include "fiberbridge/app/scene/scene_reader.h"
 #include "fiberbridge/app/scene/section.h"
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
-#include "items/fit_correction_step.h"
+#include "fiberbridge/app/items/fit_correction_step.h"
 #include "outputs/fit_correction_writers.h"
 #endif
 #include "fiberbridge/core/csv.h"

@@ -186,6 +186,7 @@ def reduce(files, columns=None, settings=None, **kwargs):
                      "mean": Result(r["mean"]), "summary": r["summary"],
                      "compute_s": r["compute_s"]})
     out._outcome = r["outcome"]
+    out._settings = s  # the chain's settings, for fit_trilinear's correction by simulation
     return out
 
 
@@ -244,21 +245,43 @@ def extract(data, delta_c_mm="auto", j_tip="auto", intervals=None, smoothing=Non
     outcome = e.pop("outcome")
     out = Extraction(e)
     out._outcome = outcome
+    # From a Reduction, fit_trilinear can correct the law by simulating its records.
+    out._reduction = data if isinstance(data, Reduction) else None
+    out._settings = (data._settings if isinstance(data, Reduction) else []) + s
     return out
 
 
 def fit_trilinear(extraction, delta1_mm=None, delta2_mm=None, free_breakpoints=None,
-                  settings=None):
+                  model_correction="auto", settings=None):
     """The trilinear fit of the Eq. 6 law (area G_ss - J_tip), breakpoints fixed (the paper's 0.1
-    and 1 mm by default) or free."""
-    kw = {"delta1_mm": delta1_mm, "delta2_mm": delta2_mm, "free_breakpoints": free_breakpoints}
+    and 1 mm by default) or free. model_correction ("auto", "none", "beam"), as a scene's
+    Fit/Model correction: when the extraction came from a Reduction, the law is corrected by
+    simulation (the beam runs the records with it until the same chain gives back what it gave on
+    them); .correction holds the outcome and, when it converged, the corrected law, which
+    simulate() then uses as a scene's fit hands it on. The fields stay the seed's fit."""
+    kw = {"delta1_mm": delta1_mm, "delta2_mm": delta2_mm, "free_breakpoints": free_breakpoints,
+          "model_correction": model_correction}
     table = {"delta1_mm": "Fit/Delta 1", "delta2_mm": "Fit/Delta 2",
-             "free_breakpoints": "Fit/Free breakpoints"}
+             "free_breakpoints": "Fit/Free breakpoints",
+             "model_correction": "Fit/Model correction"}
     s = _settings("fit_trilinear", kw, [table], settings)
     fields = _core.fit_trilinear(extraction._outcome, s)
     law_si = fields.pop("law_si")
+    reduction = getattr(extraction, "_reduction", None)
+    correction = None
+    if model_correction == "beam" and (reduction is None or not hasattr(_core, "correct_fit")):
+        raise InputError("fiberbridge.fit_trilinear: model_correction='beam' needs an extraction "
+                         "from a Reduction (its records are simulated) and a build with identify")
+    if model_correction != "none" and reduction is not None and hasattr(_core, "correct_fit"):
+        correction = _core.correct_fit(extraction._outcome, reduction._outcome, law_si,
+                                       extraction._settings + s)
+    fields["correction"] = correction
     out = TrilinearFit(fields)
     out._law_si = law_si
+    out._j_tip = fields["J_tip_J_m2"]
+    if correction is not None and correction["converged"]:
+        out._law_si = correction.pop("law_si")
+        out._j_tip = correction["J_tip_J_m2"]
     return out
 
 
@@ -303,7 +326,7 @@ def simulate(law=None, model="beam", j_tip_J_m2=None, settings=None, progress=No
                             "law section of settings")
         tri = law._law_si
         if j_tip_J_m2 is None:
-            j_tip_J_m2 = law.J_tip_J_m2
+            j_tip_J_m2 = getattr(law, "_j_tip", law.J_tip_J_m2)
     return Simulation(_core.simulate(model, s, tri, j_tip_J_m2, progress))
 
 
