@@ -236,15 +236,12 @@ ChainCorrection correct_chain(const std::vector<analysis::TestRecord>& records,
   };
 
   Vec p = m;
-  std::vector<Vec> ps, cs; // every law simulated and the chain on its records
   int worse = 0;
   for (int k = 0; k < settings.max_iterations; ++k) {
     Vec c;
     if (!step(p, c))
       return out;
     const double mis = out.steps.back().mismatch;
-    ps.push_back(p);
-    cs.push_back(c);
     if (mis <= settings.tolerance) {
       out.converged = true;
       out.corrected = from_vec(p);
@@ -282,7 +279,7 @@ ChainCorrection correct_chain(const std::vector<analysis::TestRecord>& records,
   // mean law itself lands within the chain's own steps there (its spread over those iterates,
   // not above 5 tolerances): the law is found to the chain's resolution, and the note says how
   // fine that is.
-  const std::size_t n = ps.size();
+  const std::size_t n = out.steps.size();
   double best = std::numeric_limits<double>::infinity();
   std::size_t best_from = n;
   Vec best_p{}, best_c{};
@@ -290,8 +287,8 @@ ChainCorrection correct_chain(const std::vector<analysis::TestRecord>& records,
     Vec pm{}, cm{};
     for (std::size_t j = from; j < n; ++j)
       for (std::size_t i = 0; i < pm.size(); ++i) {
-        pm[i] += ps[j][i] / double(n - from);
-        cm[i] += cs[j][i] / double(n - from);
+        pm[i] += to_vec(out.steps[j].simulated)[i] / double(n - from);
+        cm[i] += to_vec(out.steps[j].measured)[i] / double(n - from);
       }
     const double mis = mismatch(cm, m);
     if (mis < best && admissible(pm)) {
@@ -304,7 +301,7 @@ ChainCorrection correct_chain(const std::vector<analysis::TestRecord>& records,
   if (best <= settings.tolerance) {
     double jitter = 0;
     for (std::size_t j = best_from; j < n; ++j)
-      jitter = std::max(jitter, mismatch(cs[j], best_c));
+      jitter = std::max(jitter, mismatch(to_vec(out.steps[j].measured), best_c));
     Vec c;
     if (!step(best_p, c))
       return out;

@@ -152,17 +152,21 @@ ChainEstimate stepped(const ChainEstimate& p, double step) {
   return c;
 }
 
+/// The correction of biased(truth()) by a chain with steps of +-`step`.
+ChainCorrection correct_stepped(double step) {
+  Rig rig;
+  const MeasuringChain chain = [&](const std::vector<analysis::TestRecord>&) {
+    return stepped(rig.running, step);
+  };
+  return correct_chain(one_record(), {specimen::Specimen{}}, specimen::Material{}, biased(truth()),
+                       chain, rig.model());
+}
+
 TEST(ChainCorrection, FindsTheLawToTheChainsOwnSteps) {
   // Steps of +-2 % in sigma1: no single law meets the 1 % tolerance. The mean of the trailing
   // laws is run once more, and accepted because the chain lands on it within its own steps; the
   // note says to what resolution the law is found.
-  Rig rig;
-  const MeasuringChain chain = [&](const std::vector<analysis::TestRecord>&) {
-    return stepped(rig.running, 0.02);
-  };
-  const ChainCorrection c =
-      correct_chain(one_record(), {specimen::Specimen{}}, specimen::Material{}, biased(truth()),
-                    chain, rig.model());
+  const ChainCorrection c = correct_stepped(0.02);
   ASSERT_TRUE(c.converged) << (c.notes.empty() ? "" : c.notes.back());
   ASSERT_FALSE(c.notes.empty());
   EXPECT_NE(c.notes.back().find("found to that resolution"), std::string::npos) << c.notes.back();
@@ -175,13 +179,7 @@ TEST(ChainCorrection, FindsTheLawToTheChainsOwnSteps) {
 
 TEST(ChainCorrection, AChainTooCoarseForTheLawIsSaid) {
   // Steps of +-8 %: beyond 5 tolerances, the law cannot be found to a resolution worth handing on.
-  Rig rig;
-  const MeasuringChain chain = [&](const std::vector<analysis::TestRecord>&) {
-    return stepped(rig.running, 0.08);
-  };
-  const ChainCorrection c =
-      correct_chain(one_record(), {specimen::Specimen{}}, specimen::Material{}, biased(truth()),
-                    chain, rig.model());
+  const ChainCorrection c = correct_stepped(0.08);
   EXPECT_FALSE(c.converged);
   ASSERT_FALSE(c.notes.empty());
   EXPECT_EQ(c.notes.back().rfind("not corrected", 0), 0u) << c.notes.back();
