@@ -300,12 +300,14 @@ ItemOutcome run_fit_item(const SceneContext& ctx) {
   // (docs/design.md section 5); corrected by simulation where the scene asks and can.
   law::TrilinearParameters handed = fit.law;
   double handed_j_tip = extraction.steady.j_tip;
+  bool corrected = false;
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
   if (ctx.parameters().entry("Fit/Model correction") != "none" && ctx.reduced &&
       extraction_of_own_records(ctx)) {
     const auto c = correct_fit_by_simulation(ctx, extraction, o, fit, fit_correction_settings(ctx));
     write_fit_correction(c, ctx.output_dir, out.report);
     if (c.converged) {
+      corrected = true;
       handed = c.corrected.law;
       handed_j_tip = c.corrected.j_tip;
     }
@@ -313,7 +315,7 @@ ItemOutcome run_fit_item(const SceneContext& ctx) {
 #endif
   out.law = CrackLaw{std::make_shared<law::PiecewiseLinearLaw>(law::make_trilinear(handed)),
                      handed_j_tip, LawSource::fit};
-  plot_extraction(extraction, &fit, ctx.output_dir, out.report);
+  plot_extraction(extraction, &fit, ctx.output_dir, out.report, corrected);
   return out;
 }
 

@@ -91,7 +91,7 @@ void write_trilinear_fit(const analysis::TrilinearFit& fit, const std::string& o
 }
 
 void plot_extraction(const analysis::ExtractionOutcome& e, const analysis::TrilinearFit* fit,
-                     const std::string& out_dir, ItemReport& report) {
+                     const std::string& out_dir, ItemReport& report, bool corrected) {
   // Forward R(delta) of the fitted law (Eq. 2) beside the data: the check a person looks at first.
   if (fit) {
     const auto law = law::make_trilinear(fit->law);
@@ -120,6 +120,9 @@ void plot_extraction(const analysis::ExtractionOutcome& e, const analysis::Trili
        "'cohesive_law_dRdd.csv' using 1:2 with lines lw 2 title 'sigma = dR/ddelta (old method)'";
   if (fit)
     s += ", 'trilinear_fit.csv' using 1:2 with linespoints lw 2 title 'trilinear fit'";
+  if (corrected)
+    s += ", 'trilinear_fit_corrected.csv' using 1:2 with linespoints lw 2 dt 2 title 'trilinear, "
+         "corrected by simulation (handed on)'";
   s += "\n";
   if (run_gnuplot(out_dir, s))
     pngs.push_back("cohesive_law.png");

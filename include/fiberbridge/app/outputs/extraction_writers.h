@@ -18,8 +18,9 @@ void write_trilinear_fit(const analysis::TrilinearFit& fit, const std::string& o
                          ItemReport& report);
 
 /// rdelta.png (the averaged R(delta), with the fitted law's Eq. 2 forward curve in
-/// rdelta_fit_forward.csv when `fit`) and cohesive_law.png (the Eq. 6 and R' laws, and the fit).
+/// rdelta_fit_forward.csv when `fit`) and cohesive_law.png (the Eq. 6 and R' laws, the fit, and
+/// when `corrected` the law corrected by simulation, trilinear_fit_corrected.csv).
 void plot_extraction(const analysis::ExtractionOutcome& e, const analysis::TrilinearFit* fit,
-                     const std::string& out_dir, ItemReport& report);
+                     const std::string& out_dir, ItemReport& report, bool corrected = false);
 
 } // namespace fiberbridge::app
