@@ -44,7 +44,7 @@ std::vector<PathState> machine_path(const result::SimulationResult& sim) {
         // Back past the maximum: the returning branch's state at it, at the same opening as the
         // state before the jump (state_at takes the latter at that opening, the former above).
         const double w = (top - previous.opening) / (s.opening - previous.opening);
-        const auto mix = [w](double x, double y) { return (1 - w) * x + w * y; };
+        const auto mix = [w](double x, double y) { return x + w * (y - x); };
         path.push_back({top, mix(previous.load, s.load), mix(previous.a, s.a),
                         mix(previous.delta_root, s.delta_root)});
         falling_back = false;
@@ -69,7 +69,7 @@ PathState state_at(const std::vector<PathState>& path, double u) {
   if (!(b.opening > a.opening))
     return b; // u at a jump: the state before it (the first entry at that opening)
   const double w = (u - a.opening) / (b.opening - a.opening);
-  const auto mix = [w](double x, double y) { return (1 - w) * x + w * y; };
+  const auto mix = [w](double x, double y) { return x + w * (y - x); };
   return {u, mix(a.load, b.load), mix(a.a, b.a), mix(a.delta_root, b.delta_root)};
 }
 
@@ -137,6 +137,7 @@ analysis::TestRecord simulated_record(const analysis::TestRecord& measured,
   const double last_opening = path.back().opening;
   std::size_t dropped = 0;
   double last_a = std::numeric_limits<double>::quiet_NaN();
+  double widest = 0;
   for (std::size_t i = 0; i < measured.opening.size(); ++i) {
     const double u = measured.opening[i];
     if (!(u <= last_opening)) {
@@ -149,10 +150,15 @@ analysis::TestRecord simulated_record(const analysis::TestRecord& measured,
     r.opening.push_back(u);
     r.load.push_back(u > 0 ? s.load : 0.0);
     r.line.push_back(i < measured.line.size() ? measured.line[i] : i + 1);
+    // The crack never heals: its length follows the largest opening so far, so a record whose
+    // opening dips with noise (or a zero offset) still reads a crack that does not shorten.
+    widest = std::max(widest, u);
     if (has_crack) {
       const double m = measured.crack_length[i];
+      // max: also against the last ulp of the interpolation (a + w (b - a) on a flat stretch).
       if (new_reading[i])
-        last_a = s.a;
+        last_a = std::isfinite(last_a) ? std::max(last_a, state_at(path, widest).a)
+                                       : state_at(path, widest).a;
       r.crack_length.push_back(std::isfinite(m) ? last_a : m);
     }
     if (has_root)

@@ -61,6 +61,45 @@ TEST(SimulatedRecord, FollowsTheMachinePathAtTheRecordsOpenings) {
   EXPECT_EQ(r.time[5], 5);
 }
 
+TEST(SimulatedRecord, TheCrackDoesNotShortenWhenTheOpeningDips) {
+  // A lab record whose opening dips with noise between two crack readings: the simulated crack
+  // follows the largest opening so far, never shorter than the reading before (reduce refuses a
+  // crack reading that decreases).
+  result::SimulationResult sim;
+  sim.rcurve = {state(100, 2.0, 300, 0.0), state(110, 3.0, 250, 1.0)};
+  analysis::TestRecord measured;
+  measured.name = "r";
+  measured.opening = {0, 2.5 * mm, 2.49 * mm, 2.6 * mm};
+  measured.load = std::vector<double>(4, 1.0);
+  measured.crack_length = {100 * mm, 104 * mm, 104.5 * mm, 106 * mm};
+  std::vector<std::string> notes;
+  const analysis::TestRecord r = simulated_record(measured, sim, notes);
+  ASSERT_EQ(r.crack_length.size(), 4u);
+  EXPECT_NEAR(r.crack_length[1], 105 * mm, 1e-12);
+  EXPECT_NEAR(r.crack_length[2], 105 * mm, 1e-12); // at 2.5 mm, not at the dip's 2.49 mm
+  EXPECT_NEAR(r.load[2], 300 - 50 * 0.49, 1e-9);   // the load at the opening itself
+  EXPECT_NEAR(r.crack_length[3], 106 * mm, 1e-12);
+}
+
+TEST(SimulatedRecord, AFlatStretchReadsTheSameCrackToTheLastBit) {
+  // Before initiation the crack is a0 on every row: an interpolation that drifted by an ulp would
+  // read as a crack that shortens, which reduce refuses (a re-exported lab record met it).
+  result::SimulationResult sim;
+  sim.rcurve = {state(35.02, 3.046331, 300, 0.0), state(35.4599, 3.126582, 290, 0.1)};
+  analysis::TestRecord measured;
+  measured.name = "r";
+  for (int i = 0; i <= 300; ++i) {
+    measured.opening.push_back(0.01 * i * mm);
+    measured.load.push_back(1.0);
+    measured.crack_length.push_back(i == 0 ? 35.02 * mm : (i % 3 ? 35.02 * mm : NAN));
+  }
+  std::vector<std::string> notes;
+  const analysis::TestRecord r = simulated_record(measured, sim, notes);
+  for (std::size_t i = 0; i < r.crack_length.size(); ++i)
+    if (std::isfinite(r.crack_length[i]))
+      EXPECT_EQ(r.crack_length[i], 35.02 * mm) << "row " << i;
+}
+
 TEST(SimulatedRecord, NoCriticalStateIsAnError) {
   std::vector<std::string> notes;
   analysis::TestRecord measured;

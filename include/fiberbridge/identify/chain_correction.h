@@ -60,7 +60,8 @@ struct ChainCorrection {
 };
 
 /// The records a test of `sim` would have written, row by row at `measured`'s openings (and
-/// times): load, crack length (only on the rows where `measured` has a reading), delta_root (where
+/// times): load, crack length (only on the rows where `measured` has a reading; at the largest
+/// opening so far, as a crack does not heal), delta_root (where
 /// `measured` has it), each linear in the opening between the simulation's states. The machine
 /// never unloads: through a snap-back it holds the largest opening while the load drops to the
 /// returning branch's state at that opening. Before the first critical state the specimen is
