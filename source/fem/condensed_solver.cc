@@ -1,6 +1,7 @@
 // FEM/Linear solver = condensed (condensed_solver.h; docs/design.md section 2, "Condensed arms
 // (issue 34 item 3)").
 #include "condensed_solver.h"
+#include "newton_loop.h"
 
 #include "fiberbridge/core/error.h"
 
@@ -218,55 +219,58 @@ public:
       const TimerOutput::Scope timed(timer_, "assembly");
       evaluate(cur, forces, reaction_floor);
     }
-    PlaneState trial, best;
-    for (unsigned it = 0; it <= settings.max_iterations; ++it) {
-      if (cur.norm <= settings.tolerance * cur.ref) {
-        write_state(cur.v, u);
-        return true;
+    // The one Newton loop (newton_loop.h) on the jumps: the same line search and test as the
+    // full Newton's, on the same norm.
+    struct PlaneNewton {
+      Condensed& self;
+      const CrackPlaneForces& forces;
+      const unsigned epoch;
+      const double tolerance, reaction_floor;
+      PlaneState& cur;
+      std::vector<double>& tangents;
+      std::vector<double>& dv;
+      std::vector<double>& sdv;
+      PlaneState tried, best;
+
+      bool converged() const { return cur.norm <= tolerance * cur.ref; }
+      void direction() {
+        for (unsigned p = 0; p < self.point_vars_.size(); ++p)
+          tangents[p] = forces.interface->respond(p, self.opening(p, cur.v)).stiffness;
+        self.update(tangents, epoch);
+        self.step(cur, dv, sdv);
       }
-      if (it == settings.max_iterations)
-        break;
-      ++used;
-      for (unsigned p = 0; p < point_vars_.size(); ++p)
-        tangents[p] = forces.interface->respond(p, opening(p, cur.v)).stiffness;
-      update(tangents, epoch);
-      step(cur, dv, sdv);
-      // The line search of newton_solve() on the same norm.
-      double alpha = 1, best_alpha = 0, best_norm = cur.norm, last_alpha = 0;
-      for (int ls = 0; ls < 8; ++ls, alpha *= 0.5) {
-        {
-          const TimerOutput::Scope timed(timer_, "assembly");
-          trial.v = cur.v;
-          trial.lin = cur.lin;
-          for (unsigned k = 0; k < m_; ++k) {
-            trial.v[k] += alpha * dv[k];
-            trial.lin[k] += alpha * sdv[k];
-          }
-          evaluate(trial, forces, reaction_floor);
+      double merit() const { return cur.norm; }
+      double trial(double alpha) {
+        const TimerOutput::Scope timed(self.timer_, "assembly");
+        tried.v = cur.v;
+        tried.lin = cur.lin;
+        for (unsigned k = 0; k < self.m_; ++k) {
+          tried.v[k] += alpha * dv[k];
+          tried.lin[k] += alpha * sdv[k];
         }
-        last_alpha = alpha;
-        if (trial.norm < best_norm) {
-          best_norm = trial.norm;
-          best_alpha = alpha;
-          if (ls + 1 < 8 && trial.norm > (1 - 1e-4 * alpha) * cur.norm)
-            best = trial; // kept only where the search goes on
-        }
-        if (trial.norm <= (1 - 1e-4 * alpha) * cur.norm)
-          break;
+        self.evaluate(tried, forces, reaction_floor);
+        return tried.norm;
       }
-      if (best_alpha == 0) {
-        // The full Newton takes this iteration again from the same state (and counts it), where
-        // its round-off floor and diagnosis decide.
-        --used;
-        break;
+      void keep_trial(bool search_goes_on) {
+        if (search_goes_on)
+          best = tried; // kept only where the search goes on
       }
-      // (newton_solve() also accepts a creeping step at its round-off floor, which is not
-      // known here: such a run ends here without decrease or at the iteration limit, and the
-      // full Newton from u decides.)
-      std::swap(cur, best_alpha == last_alpha ? trial : best);
-    }
+      bool accept(double /*alpha*/, bool last) {
+        std::swap(cur, last ? tried : best);
+        // (The full Newton also accepts a creeping step at its round-off floor, which is not
+        // known here: such a run ends without decrease or at the iteration limit, and the full
+        // Newton from u decides.)
+        return false;
+      }
+    } newton{*this, forces, epoch, settings.tolerance, reaction_floor, cur, tangents, dv,
+             sdv,   {},     {}};
+    const NewtonStop stop = newton_loop(newton, settings.max_iterations, used);
+    if (stop == NewtonStop::no_decrease)
+      // The full Newton takes this iteration again from the same state (and counts it), where
+      // its round-off floor and diagnosis decide.
+      --used;
     write_state(cur.v, u);
-    return false;
+    return stop == NewtonStop::converged;
   }
 
 private:

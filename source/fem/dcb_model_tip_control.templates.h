@@ -6,6 +6,7 @@
 // iteration). Split from dcb_model.templates.h at its seam (issue 30 item 7); included there, so
 // the explicit instantiations in dcb_model_2d.cc and dcb_model_3d.cc cover it.
 #include "dcb_model.h"
+#include "newton_loop.h"
 #include "root_j_secant.h"
 
 #include "fiberbridge/core/error.h"
@@ -135,75 +136,83 @@ bool DcbModel<dim>::bordered_newton(const Vec& c, const Vec& e, double eta,
   // Unknowns u and the load-point opening D; equations r(u, D) = 0 and c . u = eta. Per
   // iteration two solves with one Jacobian: J du1 = -r, J du2 = -dr/dD, then D moves by what
   // the linearized constraint asks. dr/dD by a difference along the prescribed values (exact
-  // for the linear bulk up to round-off).
-  const NonlinearSettings settings{prm_.nonlinear.newton_tolerance,
-                                   prm_.nonlinear.max_newton_iterations};
-  Vec r, rf, rd, du1, du2, step, rhs, trial, rt;
-  for (Vec* v : {&r, &rf, &rd, &du1, &du2, &step, &rhs, &trial, &rt})
-    reinit_vector(*v);
-  residual(u_, r, rf);
-  double ref = reaction_norm(rf), nrm = norm(r);
-  const double gap_tol = 1e-9 * std::abs(eta) + 1e-15 * specimen_.length;
-  for (unsigned it = 0; it <= settings.max_iterations; ++it) {
-    const double gap = c * u_ - eta;
-    if (std::abs(gap) <= gap_tol && nrm <= settings.tolerance * ref)
-      return true;
-    if (it == settings.max_iterations)
-      break;
-    ++info_.n_newton;
-    setup_jacobian(u_);
-    rhs = r;
-    rhs *= -1.0;
-    solve_jacobian(rhs, du1);
-    const double h = 1e-4 * std::max(std::abs(opening_), 1e-6 * specimen_.length);
-    trial = u_;
-    trial.add(h, e);
-    residual(trial, rd, rf);
-    rd -= r;
-    rd *= -1.0 / h;
-    solve_jacobian(rd, du2);
-    du2 += e; // du/dD along the equilibrium at fixed eta's linearization
-    const double dD = -(gap + c * du1) / (c * du2);
-    step = du1;
-    step.add(dD, du2);
-    // Merit: the residual and the constraint gap in force units (the force per unit eta).
-    const double w = norm(rd) / std::max(std::abs(c * du2), 1e-300);
-    auto merit = [&](double rn, double g) { return std::sqrt(rn * rn + w * w * g * g); };
-    const double phi = merit(nrm, gap);
-    double alpha = 1, best_alpha = 0, best_phi = phi, best_ref = ref;
-    for (int ls = 0; ls < 8; ++ls, alpha *= 0.5) {
-      trial = u_;
-      trial.add(alpha, step);
-      residual(trial, rt, rf);
-      const double trial_phi = merit(norm(rt), c * trial - eta);
-      if (trial_phi < best_phi) {
-        best_phi = trial_phi;
-        best_alpha = alpha;
-        best_ref = reaction_norm(rf);
-      }
-      if (trial_phi <= (1 - 1e-4 * alpha) * phi)
-        break;
+  // for the linear bulk up to round-off). The iteration is the one Newton loop's
+  // (newton_loop.h); its merit holds the residual and the constraint gap in force units.
+  struct Bordered {
+    Bordered(DcbModel& model, const Vec& constraint, const Vec& prescribed, double target)
+        : m(model), c(constraint), e(prescribed), eta(target),
+          tolerance(m.prm_.nonlinear.newton_tolerance),
+          gap_tol(1e-9 * std::abs(target) + 1e-15 * m.specimen_.length) {
+      for (Vec* v : {&r, &rf, &rd, &du1, &du2, &step, &rhs, &tried, &rt})
+        m.reinit_vector(*v);
+      m.residual(m.u_, r, rf);
+      ref = m.reaction_norm(rf);
+      nrm = m.norm(r);
     }
-    if (best_alpha == 0) {
-      if (nrm <= roundoff_floor(u_) && std::abs(gap) <= gap_tol)
-        return true;
-      diagnosis =
-          "line search found no decrease of the residual " + fmt(nrm) + " N" + contact_summary();
+    DcbModel& m;
+    const Vec& c;
+    const Vec& e;
+    const double eta, tolerance, gap_tol;
+    Vec r, rf, rd, du1, du2, step, rhs, tried, rt;
+    double ref = 0, nrm = 0, gap = 0, dD = 0, w = 0, best_ref = 0;
+
+    double merit_of(double rn, double g) const { return std::sqrt(rn * rn + w * w * g * g); }
+    bool converged() {
+      gap = c * m.u_ - eta;
+      return std::abs(gap) <= gap_tol && nrm <= tolerance * ref;
+    }
+    void direction() {
+      m.setup_jacobian(m.u_);
+      rhs = r;
+      rhs *= -1.0;
+      m.solve_jacobian(rhs, du1);
+      const double h = 1e-4 * std::max(std::abs(m.opening_), 1e-6 * m.specimen_.length);
+      tried = m.u_;
+      tried.add(h, e);
+      m.residual(tried, rd, rf);
+      rd -= r;
+      rd *= -1.0 / h;
+      m.solve_jacobian(rd, du2);
+      du2 += e; // du/dD along the equilibrium at fixed eta's linearization
+      dD = -(gap + c * du1) / (c * du2);
+      step = du1;
+      step.add(dD, du2);
+      // The force per unit eta weighs the gap.
+      w = m.norm(rd) / std::max(std::abs(c * du2), 1e-300);
+    }
+    double merit() const { return merit_of(nrm, gap); }
+    double trial(double alpha) {
+      tried = m.u_;
+      tried.add(alpha, step);
+      m.residual(tried, rt, rf);
+      return merit_of(m.norm(rt), c * tried - eta);
+    }
+    void keep_trial(bool /*search goes on*/) { best_ref = m.reaction_norm(rf); }
+    bool accept(double alpha, bool /*last*/) {
+      m.u_.add(alpha, step);
+      m.opening_ += alpha * dD;
+      m.residual(m.u_, r, rf);
+      ref = best_ref;
+      const double before = nrm;
+      nrm = m.norm(r);
+      m.note_contraction(nrm / std::max(before, 1e-300));
       return false;
     }
-    u_.add(best_alpha, step);
-    opening_ += best_alpha * dD;
-    residual(u_, r, rf);
-    ref = best_ref;
-    const double before = nrm;
-    nrm = norm(r);
-    note_contraction(nrm / std::max(before, 1e-300));
-  }
-  if (nrm <= roundoff_floor(u_) && std::abs(c * u_ - eta) <= gap_tol)
+    bool at_floor_and_on_constraint() const {
+      return nrm <= m.roundoff_floor(m.u_) && std::abs(c * m.u_ - eta) <= gap_tol;
+    }
+  } newton(*this, c, e, eta);
+  const unsigned max_iterations = prm_.nonlinear.max_newton_iterations;
+  const NewtonStop stop = newton_loop(newton, max_iterations, info_.n_newton);
+  if (stop == NewtonStop::converged || newton.at_floor_and_on_constraint())
     return true;
-  diagnosis = "no convergence in " + std::to_string(settings.max_iterations) +
-              " bordered Newton iterations (residual " + fmt(nrm / ref) + " of the reaction)" +
-              contact_summary();
+  if (stop == NewtonStop::no_decrease)
+    diagnosis = "line search found no decrease of the residual " + fmt(newton.nrm) + " N" +
+                contact_summary();
+  else
+    diagnosis = "no convergence in " + std::to_string(max_iterations) +
+                " bordered Newton iterations (residual " + fmt(newton.nrm / newton.ref) +
+                " of the reaction)" + contact_summary();
   return false;
 }
 
