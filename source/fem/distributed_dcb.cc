@@ -31,7 +31,7 @@ simulate_dcb(const specimen::Specimen& specimen, const specimen::Material& mater
   FemRunDetails& d = details ? *details : local_details;
   // FEM/Element size = auto is resolved here, before the mesh is built (issue 34): the engine
   // only ever sees a number. Plain arithmetic on the scene's values: every rank chooses the same.
-  const MeshChoice mesh = choose_mesh(specimen, material, law, parameters);
+  const MeshChoice mesh = choose_mesh(specimen, material, law, j_tip, parameters);
   const FemParameters resolved = with_mesh(parameters, mesh);
   result::SimulationResult r;
   if (parameters.mesh.dimension == 3)

@@ -49,9 +49,9 @@ void FemParameters::Mesh::declare_parameters(dealii::ParameterHandler& prm) {
                     "Element length along the crack plane [mm]; also the tip advance per "
                     "release. Uniform over the whole beam length. auto (the default): chosen per "
                     "run from the arm (at most 2 mm, at most 4 crack-plane layers long, the notch "
-                    "and ligament) and the law (an estimated cohesive zone length over 8, not "
-                    "below Length/600); summary.json fem.mesh says what was chosen and why. A "
-                    "number is used as given.");
+                    "and ligament) and the law (an estimated cohesive zone length over 6, as far "
+                    "as the mesh stays within 65000 dofs); summary.json fem.mesh says what was "
+                    "chosen and why. A number is used as given.");
   prm.declare_entry("Grading", "1.3", Double(1),
                     "Growth ratio of element heights from the crack plane (where elements are "
                     "square) towards the beam faces.");

@@ -19,10 +19,11 @@ namespace fiberbridge::fem {
 /// on the seed DCB with the PVA control law G_ss and R_J within 0.1 %), so a scene that ran on
 /// the default keeps its mesh wherever its arm and its zone allow.
 extern const double kAutoLargestElement;
-/// The cost floor: at most this many elements along the specimen length (auto_mesh.cc says why).
-/// A zone that needs finer elements is run at the floor and flagged by the zone rule
-/// (result::note_zone_resolution: steady_state_status zone_unresolved).
-extern const double kAutoMostElementsAlongLength;
+/// The cost bound: auto refines for the zone only while the mesh stays within this many dofs
+/// (estimated_dofs; auto_mesh.cc says why). A zone that needs finer elements is run at the
+/// finest element within the bound and flagged by the zone rule (result::note_zone_resolution:
+/// steady_state_status zone_unresolved).
+extern const double kAutoMostDofs;
 /// The element is the estimated zone length over this (auto_mesh.cc says why).
 extern const double kAutoElementsPerZoneEstimate;
 
@@ -53,21 +54,41 @@ double element_length(const specimen::Specimen& specimen, const FemParameters& p
 /// (plane stress or strain): 1/E' = sqrt(s11 s22 / 2) sqrt(sqrt(s22/s11) + (2 s12 + s66)/(2 s11)).
 double crack_modulus(const specimen::Material& material);
 
-/// Closed-form cohesive zone length of `law` on this specimen [m]: the smaller of the
+/// The law's own closed-form cohesive zone length on this specimen [m]: the smaller of the
 /// infinite-body length E' G_c / sigma_max^2 (Hillerborg; Turon et al. 2007) and the slender-arm
 /// length (E_L G_c / sigma_max^2)^(1/4) h^(3/4) (Yang & Cox 2005; docs/design.md section 3,
 /// "Reference formulas"), with G_c the law's area and sigma_max its peak traction. 0 for a law
 /// without a zone.
+double bridging_zone_length(const specimen::Specimen& specimen, const specimen::Material& material,
+                            const law::TractionLaw& law);
+
+/// How far behind the tip the tip's own field opens the crack to `critical_opening` under
+/// `j_tip` alone [m]: the smaller of the K-field length pi E' delta_c^2 / (32 J_tip) and the
+/// slender-arm length sqrt(delta_c / kappa), kappa = sqrt(12 J_tip / (E_L h^3)). Infinite for
+/// J_tip = 0.
+double tip_opening_length(const specimen::Specimen& specimen, const specimen::Material& material,
+                          double critical_opening, double j_tip);
+
+/// Closed-form cohesive zone length of `law` behind a tip at `j_tip` [m]: the harmonic mean of
+/// bridging_zone_length (the law's own energy and peak) and tip_opening_length (the tip's share),
+/// so that a law weak against J_tip (the zone closes in the tip's field) gets the tip's short
+/// length and a strong law its Hillerborg length. 0 for a law without a zone.
 double estimated_zone_length(const specimen::Specimen& specimen, const specimen::Material& material,
-                             const law::TractionLaw& law);
+                             const law::TractionLaw& law, double j_tip);
+
+/// The degrees of freedom of the generated mesh (both arms, every displacement component) with
+/// elements of `element_size` (a0 / n), with the degree FEM/Element degree resolves to and, in
+/// 3D, the elements across the width. A read mesh is counted as the generated one it replaces.
+double estimated_dofs(const specimen::Specimen& specimen, const specimen::Material& material,
+                      const FemParameters& parameters, double element_size);
 
 /// The mesh of a run: for a given size that size; for auto the smallest of arm_element_size and
-/// the zone estimate over kAutoElementsPerZoneEstimate, not below Length /
-/// kAutoMostElementsAlongLength (snapped down to a0 / n); the layers through each arm follow from
+/// the zone estimate over kAutoElementsPerZoneEstimate (snapped down to a0 / n), not finer than
+/// the finest a0 / n within kAutoMostDofs; the layers through each arm follow from
 /// the generated mesh lines (crack-plane layer min(element, h / Minimum layers per arm), graded by
 /// FEM/Grading).
 MeshChoice choose_mesh(const specimen::Specimen& specimen, const specimen::Material& material,
-                       const law::TractionLaw& law, const FemParameters& parameters);
+                       const law::TractionLaw& law, double j_tip, const FemParameters& parameters);
 
 /// `parameters` with FEM/Element size set to the choice's size (what the engine runs).
 FemParameters with_mesh(const FemParameters& parameters, const MeshChoice& choice);
