@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <limits>
+#include <utility>
 
 namespace fiberbridge::identify::detail {
 
@@ -94,17 +96,27 @@ struct ObjectiveData {
   double best = std::numeric_limits<double>::infinity();
   const std::function<void(const std::string&)>* progress;
   std::string label; ///< which optimizer run, for the progress lines
+  /// What the objective threw, kept across NLopt: its C++ wrapper catches every exception of an
+  /// objective and throws "nlopt failure" instead, which would lose a ComputationError's message
+  /// and turn a caller's stop (RunInterrupted, a Python KeyboardInterrupt from the progress
+  /// callback) into a failed start.
+  std::exception_ptr thrown;
 };
 
 double objective(const std::vector<double>& u, std::vector<double>&, void* data) {
   auto& d = *static_cast<ObjectiveData*>(data);
-  const double f = d.misfit->chi2(d.mapping->physical(u));
-  ++d.evaluations;
-  d.best = std::min(d.best, f);
-  if (*d.progress && d.evaluations % 50 == 0)
-    (*d.progress)("identify: " + d.label + ": " + std::to_string(d.evaluations) +
-                  " evaluations, best chi^2 " + fmt(d.best));
-  return f;
+  try {
+    const double f = d.misfit->chi2(d.mapping->physical(u));
+    ++d.evaluations;
+    d.best = std::min(d.best, f);
+    if (*d.progress && d.evaluations % 50 == 0)
+      (*d.progress)("identify: " + d.label + ": " + std::to_string(d.evaluations) +
+                    " evaluations, best chi^2 " + fmt(d.best));
+    return f;
+  } catch (...) {
+    d.thrown = std::current_exception();
+    throw nlopt::forced_stop(); // NLopt stops and optimize() throws forced_stop
+  }
 }
 
 /// A bounded NLopt run on [0,1]^6 from `u` (updated), returning the misfit reached.
@@ -123,6 +135,10 @@ double run_optimizer(const IdentifySettings& settings, ObjectiveData& data, doub
   } catch (const nlopt::roundoff_limited&) {
     code = nlopt::ROUNDOFF_LIMITED;
     f = data.misfit->chi2(data.mapping->physical(u));
+  } catch (const nlopt::forced_stop&) {
+    if (data.thrown) // the objective's own exception, as it was thrown
+      std::rethrow_exception(std::exchange(data.thrown, nullptr));
+    throw;
   }
   return f;
 }
@@ -143,7 +159,7 @@ std::string optimizer_job(const std::vector<PreparedRecord>& prepared,
                           double initial_step) {
   Misfit misfit(prepared, settings, forward);
   ObjectiveData data{&misfit,   &mapping, 0, std::numeric_limits<double>::infinity(),
-                     &progress, label};
+                     &progress, label, nullptr};
   nlopt::result code{};
   const double f = run_optimizer(settings, data, tolerance, initial_step, u, code);
   ByteWriter w;

@@ -8,6 +8,7 @@
 
 #include "fiberbridge/app/items/items.h"
 #include "fiberbridge/app/outputs/campaign_writers.h"
+#include "fiberbridge/core/error.h"
 
 #include <pybind11/stl.h>
 
@@ -18,24 +19,30 @@ namespace fiberbridge::python {
 void bind_campaign(py::module_& m) {
   m.def(
       "campaign",
-      [](const std::vector<std::string>& settings) {
+      [](const std::vector<std::string>& settings, const py::object& progress) {
         std::string block;
         double compute_s = 0;
-        {
+        // The campaign's lines (one per group and per simulation) check for Ctrl-C; without a
+        // callback they are not printed (a call writes nothing).
+        SceneProgress lines(progress, /*echo=*/false);
+        try {
           py::gil_scoped_release free;
-          const app::SceneContext ctx = call_context("fiberbridge.campaign", settings, "campaign");
+          app::SceneContext ctx = call_context("fiberbridge.campaign", settings, "campaign");
+          ctx.progress_sink = lines.sink();
           const auto t0 = std::chrono::steady_clock::now();
           const analysis::CampaignResult r = app::analyse_scene_campaign(ctx);
           compute_s = seconds_since(t0);
           app::CampaignWriteOptions w;
           w.seconds = compute_s;
           block = app::campaign_summary_block(r, w).dump();
+        } catch (const RunInterrupted&) {
+          lines.raise_kept("fiberbridge.campaign");
         }
         py::dict d = python_of_json_text(block);
         d["compute_s"] = compute_s;
         return d;
       },
-      py::arg("settings"),
+      py::arg("settings"), py::arg("progress") = py::none(),
       "The campaign of Campaign/Manifest as summary.json's campaign block (nothing written).");
 }
 

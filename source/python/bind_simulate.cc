@@ -108,11 +108,18 @@ void bind_simulate(py::module_& m) {
 
   m.def(
       "run_scene",
-      [](const std::string& path, const std::vector<std::string>& settings, bool resume) {
+      [](const std::string& path, const std::vector<std::string>& settings, bool resume,
+         const py::object& progress) {
+        // Each progress line of the scene (every item's and model's, nested scenes' too) runs
+        // Python's signal handlers, then the callback, or prints the line to stderr as the
+        // command line does. A Python error there (Ctrl-C, or the callback's own) is kept and the
+        // run stopped by RunInterrupted, which no item takes for a failed case (core/error.h);
+        // the run directory keeps its incomplete marker, and the error is raised here.
+        SceneProgress lines(progress, /*echo=*/true);
         std::string text;
-        {
+        try {
           py::gil_scoped_release free;
-          const std::string out = app::run_scene(path, settings, resume);
+          const std::string out = app::run_scene(path, settings, resume, lines.sink());
           std::ifstream in(out + "/summary.json");
           if (!in)
             throw ComputationError(out + "/summary.json: the scene ran but its summary cannot "
@@ -120,11 +127,15 @@ void bind_simulate(py::module_& m) {
           std::ostringstream s;
           s << in.rdbuf();
           text = s.str();
+        } catch (const RunInterrupted&) {
+          lines.raise_kept(path);
         }
         return python_of_json_text(text);
       },
       py::arg("path"), py::arg("settings"), py::arg("resume") = false,
-      "Runs a scene as `fiberbridge run` does; returns its summary.json.");
+      py::arg("progress") = py::none(),
+      "Runs a scene as `fiberbridge run` does; returns its summary.json. progress(line) gets the "
+      "run's progress lines (default: stderr); Ctrl-C stops the run at the next line.");
 }
 
 } // namespace fiberbridge::python

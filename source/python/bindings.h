@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace fiberbridge::python {
@@ -27,6 +28,24 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0) {
 /// unless it is None. Either exception is thrown through the model, which unwinds and has written
 /// nothing. (module.cc)
 std::function<void(const std::string&)> progress_lines(const py::object& progress);
+
+/// The progress sink of a scene's run for a call from Python (SceneContext::progress_sink): at
+/// each line progress_lines' check and callback, or, without a callback and with `echo`, the line
+/// on standard error as the command line prints it. A Python error there (Ctrl-C, the callback's
+/// own) is kept and the run stopped with RunInterrupted (core/error.h), which no item takes for
+/// a failed case; once the run has unwound, `raise_kept()` raises it. (module.cc)
+class SceneProgress {
+public:
+  SceneProgress(const py::object& progress, bool echo);
+  std::function<void(const std::string&)> sink();
+  /// With the GIL held, after RunInterrupted reached the binding: the kept Python error.
+  [[noreturn]] void raise_kept(const std::string& where);
+
+private:
+  std::function<void(const std::string&)> lines_;
+  bool echo_;
+  std::shared_ptr<py::error_already_set> kept_;
+};
 
 /// A summary.json block as the Python object json.loads makes of it.
 py::object python_of_json_text(const std::string& json_text);

@@ -10,6 +10,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <cstdlib>
+#include <iostream>
 
 namespace fiberbridge::python {
 
@@ -29,6 +30,29 @@ std::function<void(const std::string&)> progress_lines(const py::object& progres
     if (!callable.is_none())
       callable(line);
   };
+}
+
+SceneProgress::SceneProgress(const py::object& progress, bool echo)
+    : lines_(progress_lines(progress)), echo_(echo && progress.is_none()) {}
+
+std::function<void(const std::string&)> SceneProgress::sink() {
+  return [this](const std::string& line) {
+    try {
+      lines_(line);
+    } catch (py::error_already_set& e) {
+      py::gil_scoped_acquire hold;
+      kept_ = std::make_shared<py::error_already_set>(std::move(e));
+      throw RunInterrupted{};
+    }
+    if (echo_)
+      std::cerr << line << '\n';
+  };
+}
+
+void SceneProgress::raise_kept(const std::string& where) {
+  if (kept_)
+    throw py::error_already_set(std::move(*kept_));
+  throw ComputationError(where + ": the run was stopped");
 }
 
 namespace {

@@ -113,7 +113,7 @@ TEST(SceneMessages, AnUnknownItemIsCalledUnknown) {
 // A subnormal Double printed deal.II's internal error with a stack trace. (An overflowing 1e400 is
 // refused by deal.II's own Double pattern before it reaches us, with its own message.)
 TEST(SceneMessages, ASubnormalNumberNamesKeyAndValue) {
-  for (const std::string& v : {"1e-320", "4.9e-324"}) {
+  for (const std::string v : {"1e-320", "4.9e-324"}) {
     const std::string e =
         scene_error(scene_file("subnormal", "subsection DIC\n  set Frame rate = " + v + "\nend\n"));
     EXPECT_NE(e.find("DIC/Frame rate = " + v), std::string::npos) << e;

@@ -95,9 +95,11 @@ TEST(SimulatedRecord, AFlatStretchReadsTheSameCrackToTheLastBit) {
   }
   std::vector<std::string> notes;
   const analysis::TestRecord r = simulated_record(measured, sim, notes);
-  for (std::size_t i = 0; i < r.crack_length.size(); ++i)
-    if (std::isfinite(r.crack_length[i]))
+  for (std::size_t i = 0; i < r.crack_length.size(); ++i) {
+    if (std::isfinite(r.crack_length[i])) {
       EXPECT_EQ(r.crack_length[i], 35.02 * mm) << "row " << i;
+    }
+  }
 }
 
 TEST(SimulatedRecord, NoCriticalStateIsAnError) {

@@ -47,3 +47,22 @@ def test_identify_gives_the_scene_s_law(fb, tmp_path):
 def test_identify_names_a_missing_record(fb):
     with pytest.raises(fb.InputError, match="no_such_record.csv"):
         fb.identify("no_such_record.csv", columns=COLUMNS, settings=SMALL, **SPECIMEN)
+
+
+class Stop(Exception):
+    pass
+
+
+def test_a_stop_inside_the_optimizer_is_raised_as_it_was(fb):
+    # The optimizer's progress line comes from inside NLopt's objective (every 50 evaluations),
+    # whose C++ wrapper turns any exception into "nlopt failure": the callback's own exception
+    # (or KeyboardInterrupt from Ctrl-C) must come out as it was raised.
+    def stop_inside(line):
+        if "evaluations, best chi^2" in line:
+            raise Stop(line)
+
+    with pytest.raises(Stop, match="50 evaluations"):
+        # A tolerance that keeps the optimizer going past 50 evaluations.
+        fb.identify(RECORD, columns=COLUMNS,
+                    settings={**SMALL, "Identify/Max evaluations": 120, "Identify/Tolerance": 1e-8},
+                    progress=stop_inside, **SPECIMEN)

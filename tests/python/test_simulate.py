@@ -131,3 +131,82 @@ def test_ctrl_c_stops_a_long_call(tmp_path):
     assert p.returncode == 3, (out, err)
     assert out.startswith("interrupted after"), (out, err)
     assert float(out.split()[2]) < 15, out
+
+
+# run_scene sees Ctrl-C at every progress line of the scene too (items, models, nested scenes),
+# not only when the scene returns: the same FEM run as a scene. The run directory keeps the
+# marker of an incomplete run and gets no summary.json (app/outputs/run_directory.h).
+INTERRUPTED_SCENE = """
+import sys, time
+import fiberbridge as fb
+said = []
+def progress(line):
+    if not said:
+        said.append(time.time())
+        print("running", flush=True)
+try:
+    fb.run_scene("prm/control_pva.prm", set={"Run": "fem", "FEM/Element size": 0.5,
+                                             "Output directory": sys.argv[1]}, progress=progress)
+    print("finished", flush=True)
+except KeyboardInterrupt:
+    print("interrupted after %.1f s" % (time.time() - said[0]), flush=True)
+    sys.exit(3)
+"""
+
+
+def test_ctrl_c_stops_a_long_scene(tmp_path):
+    import signal
+    import subprocess
+    import sys
+    import time
+    out = tmp_path / "out"
+    p = subprocess.Popen([sys.executable, "-c", INTERRUPTED_SCENE, str(out)],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert p.stdout.readline().strip() == "running"
+        time.sleep(0.5)
+        p.send_signal(signal.SIGINT)
+        stdout, err = p.communicate(timeout=30)
+    finally:
+        if p.poll() is None:
+            p.kill()
+    assert p.returncode == 3, (stdout, err)
+    assert stdout.startswith("interrupted after"), (stdout, err)
+    # The whole run takes about a minute; the stop comes at the next progress line.
+    assert float(stdout.split()[2]) < 15, stdout
+    assert (out / "RUN_INCOMPLETE.txt").exists()
+    assert not (out / "summary.json").exists()
+
+
+def test_a_stop_in_scene_progress_is_not_a_failed_case(fb, tmp_path):
+    # The study takes a failed stability case for a row of its table (it catches the model's
+    # errors); a stop asked by the progress callback must end the whole run instead.
+    seen = []
+
+    def stop_at_the_first_stability_case(line):
+        seen.append(line)
+        if line.startswith("study: stability"):
+            raise Stop(line)
+
+    out = tmp_path / "out"
+    with pytest.raises(Stop, match="study: stability"):
+        fb.run_scene("prm/study_beam.prm", set={"Output directory": str(out),
+                                                "Study/Beam ladder": "Number of elements = 50"},
+                     progress=stop_at_the_first_stability_case)
+    assert seen[0] == "fiberbridge: running study"
+    assert (out / "RUN_INCOMPLETE.txt").exists()
+    assert not (out / "summary.json").exists()
+    # The module is usable after the unwound run.
+    assert fb.simulate(model="beam").reached_steady_state
+
+
+def test_numpy_scalars_are_settings_as_python_numbers_are(fb):
+    # A lab's loop hands over numpy scalars (np.float64 from an array, np.bool_ from a mask): they
+    # are the .prm text of the Python value they hold ("true", not numpy's "True").
+    assert fb._value(np.bool_(True)) == "true"
+    assert fb._value(np.float64(0.1)) == "0.1"
+    assert fb._value(np.int64(100)) == "100"
+    a = fb.simulate(model="beam", width_mm=np.float64(20.0),
+                    settings={"Beam/Number of elements": np.int64(100)})
+    b = fb.simulate(model="beam", width_mm=20.0, settings={"Beam/Number of elements": 100})
+    assert a.G_ss_J_m2 == b.G_ss_J_m2

@@ -18,4 +18,10 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+/// Thrown by a caller's progress hook to stop a run (the Python module on Ctrl-C, or when its
+/// progress callback raises). Deliberately not a std::exception: the items that recover from a
+/// failed case (a study level, a campaign group, a chain-study case, identify's misfit) catch
+/// std::exception, and must not take a stop for a failed computation; it unwinds the whole run.
+struct RunInterrupted {};
+
 } // namespace fiberbridge

@@ -213,8 +213,8 @@ std::vector<GroupSimulation> simulate_campaign_laws(const SceneContext& ctx,
     restored.push_back(
         restore_campaign_simulation(ctx.output_dir, ctx.resume, inputs.back(), sims.back()));
     if (restored.back() && output_enabled())
-      std::cerr << "campaign: resume: " << model << " simulation of " << g->material << " at "
-                << fmt(g->cycles) << " cycles restored\n";
+      ctx.progress("campaign: resume: " + model + " simulation of " + g->material + " at " +
+                   fmt(g->cycles) + " cycles restored");
   }
   int ranks = 1;
   MPI_Comm_size(simulation_communicator(), &ranks);
@@ -224,9 +224,9 @@ std::vector<GroupSimulation> simulate_campaign_laws(const SceneContext& ctx,
         continue;
       sims[i] = simulate_group(ctx, *groups[i], sims[i]);
       keep_campaign_simulation(ctx.output_dir, inputs[i], sims[i]);
-      std::cerr << "campaign: " << model << " simulation " << i + 1 << "/" << groups.size() << " "
-                << groups[i]->material << " at " << fmt(groups[i]->cycles) << " cycles, "
-                << fmt(sims[i].wall_time_s, 3) << " s\n";
+      ctx.progress("campaign: " + model + " simulation " + std::to_string(i + 1) + "/" +
+                   std::to_string(groups.size()) + " " + groups[i]->material + " at " +
+                   fmt(groups[i]->cycles) + " cycles, " + fmt(sims[i].wall_time_s, 3) + " s");
     }
     return sims;
   }

@@ -14,7 +14,6 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/patterns.h>
 
-#include <iostream>
 #endif
 
 namespace fiberbridge::app {
@@ -137,7 +136,7 @@ static result::SimulationResult simulate_beam_law(const SceneContext& ctx,
 
 static ItemOutcome run_beam_item(const SceneContext& ctx) {
   const beam::BeamParameters params = beam_parameters(ctx);
-  auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
+  auto progress = [&ctx](const std::string& line) { ctx.progress(line); };
   result::SimulationResult result =
       beam::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params, progress);
   return report_simulation(ctx, std::move(result), "n_elements");

@@ -32,7 +32,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <iostream>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -271,8 +270,8 @@ void run_groups(std::vector<analysis::CampaignGroup>& groups,
     analysis::apply_law_shift(g.estimate, g.correction, o);
     g.seed = analysis::group_seed(o.seed, g.material, g.cycles);
     if (output_enabled())
-      std::cerr << "campaign: resume: group " << g.material << " at " << fmt(g.cycles)
-                << " cycles restored from " << campaign_group_record(ctx.output_dir, g) << "\n";
+      ctx.progress("campaign: resume: group " + g.material + " at " + fmt(g.cycles) +
+                   " cycles restored from " + campaign_group_record(ctx.output_dir, g));
   };
   int ranks = 1;
   MPI_Comm_size(simulation_communicator(), &ranks);
@@ -339,11 +338,33 @@ void parse_campaign_section(dealii::ParameterHandler& prm, SceneParameters& out)
   }
 }
 
+namespace {
+/// The line a campaign gives per group ("campaign: group 3/20 PVA at 8 cycles (...), 1.2 s"), the
+/// seconds counted from `t0`.
+std::string group_progress_line(std::size_t done, std::size_t all, const analysis::CampaignGroup& g,
+                                std::chrono::steady_clock::time_point t0) {
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return "campaign: group " + std::to_string(done) + "/" + std::to_string(all) + " " + g.material +
+         " at " + fmt(g.cycles) + " cycles (" + std::to_string(g.members.size()) + " specimens, " +
+         std::to_string(g.samples.size()) + " bootstrap samples), " + fmt(seconds, 3) + " s";
+}
+} // namespace
+
 analysis::CampaignResult analyse_scene_campaign(const SceneContext& ctx) {
   const CampaignInputs in = campaign_inputs(ctx);
   const auto manifest = analysis::read_campaign_manifest(in.manifest_path);
+  // Lines only to a caller's sink (the Python module's, which checks for Ctrl-C there): this
+  // computes without writing, to files or to the terminal.
+  const auto t0 = std::chrono::steady_clock::now();
+  analysis::CampaignProgress progress;
+  if (ctx.progress_sink)
+    progress = [&](std::size_t done, std::size_t all, const analysis::CampaignGroup& g) {
+      ctx.progress(group_progress_line(done, all, g, t0));
+    };
   // The default runner: every group here, in order (the same numbers as any placement).
-  return analysis::analyse_campaign(manifest, in.raw, in.options, in.section.reference_materials);
+  return analysis::analyse_campaign(manifest, in.raw, in.options, in.section.reference_materials,
+                                    progress);
 }
 
 void check_campaign_item(SceneContext& ctx) {
@@ -359,10 +380,7 @@ ItemOutcome run_campaign_item(const SceneContext& ctx) {
   auto progress = [&](std::size_t done, std::size_t all, const analysis::CampaignGroup& g) {
     if (!speak)
       return;
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::cerr << "campaign: group " << done << "/" << all << " " << g.material << " at "
-              << fmt(g.cycles) << " cycles (" << g.members.size() << " specimens, "
-              << g.samples.size() << " bootstrap samples), " << fmt(s, 3) << " s\n";
+    ctx.progress(group_progress_line(done, all, g, t0));
   };
   int ranks = 1;
   MPI_Comm_size(simulation_communicator(), &ranks);

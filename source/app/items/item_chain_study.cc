@@ -14,6 +14,7 @@
 #include "fiberbridge/app/scene/scene_reader.h"
 #include "fiberbridge/app/scene/section.h"
 #include "fiberbridge/core/error.h"
+#include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
 #include "fiberbridge/law/law_spec.h"
 #include "items/chain_study_item.h"
@@ -24,7 +25,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 
 namespace fiberbridge::app {
 
@@ -230,7 +230,8 @@ ChainRow run_case(const SceneContext& ctx, const ChainStudySection& section, con
   t0 = std::chrono::steady_clock::now();
   try {
     run_scene(fem_dir + "/virtual_test/dic_scene.prm",
-              {"Run=" + section.chain_run, "Output directory=" + chain_dir});
+              {"Run=" + section.chain_run, "Output directory=" + chain_dir}, false,
+              ctx.progress_sink);
     read_recovered(chain_dir + "/summary.json", row);
     row.outcome = "recovered";
   } catch (const std::exception& e) {
@@ -250,7 +251,7 @@ ChainRow run_case(const SceneContext& ctx, const ChainStudySection& section, con
     t0 = std::chrono::steady_clock::now();
     try {
       run_scene(fem_dir + "/virtual_test/dic_scene.prm",
-                {"Run=dic, identify", "Output directory=" + id_dir});
+                {"Run=dic, identify", "Output directory=" + id_dir}, false, ctx.progress_sink);
       read_identified(id_dir + "/summary.json", *truth, d1, d2, row.identified);
       row.identified.outcome = "identified";
     } catch (const std::exception& e) {
@@ -296,9 +297,9 @@ ItemOutcome run_chain_study_item(const SceneContext& ctx) {
   for (const auto& c : cases) {
     rows.push_back(run_case(ctx, section, c));
     const auto& r = rows.back();
-    std::cout << "chain study: " << r.name << " " << r.outcome
-              << (r.missed.empty() ? "" : " (missed: " + r.missed + ")") << ", "
-              << r.fem_wall_s + r.chain_wall_s << " s" << std::endl;
+    ctx.progress("chain study: " + r.name + " " + r.outcome +
+                 (r.missed.empty() ? "" : " (missed: " + r.missed + ")") + ", " +
+                 fmt(r.fem_wall_s + r.chain_wall_s, 3) + " s");
   }
   ItemOutcome out;
   write_chain_study(ctx, rows, seconds_since(t0), out.report);

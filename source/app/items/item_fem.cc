@@ -28,7 +28,6 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <filesystem>
-#include <iostream>
 #endif
 
 namespace fiberbridge::app {
@@ -89,7 +88,7 @@ static ItemOutcome run_fem_item(const SceneContext& ctx) {
   const bool rank0 = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
   std::function<void(const std::string&)> progress;
   if (rank0)
-    progress = [](const std::string& line) { std::cerr << line << '\n'; };
+    progress = [&ctx](const std::string& line) { ctx.progress(line); };
   fem::DistributedRunInfo info;
   result::SimulationResult result =
       fem::simulate_dcb(ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params,

@@ -233,7 +233,7 @@ run_or_restore_fits(const SceneContext& ctx, const std::vector<std::string>& uni
                     const identify::IdentifySettings& settings, const specimen::Specimen& specimen,
                     const specimen::Material& quoted, const identify::ForwardModel& forward,
                     const Fingerprint& inputs, Json& tasks) {
-  auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
+  auto progress = [&ctx](const std::string& line) { ctx.progress(line); };
   std::vector<std::optional<identify::Identification>> fits(units.size());
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < units.size(); ++i)

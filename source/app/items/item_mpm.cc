@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #endif
 
 namespace fiberbridge::app {
@@ -192,7 +191,7 @@ static result::SimulationResult simulate_mpm_law(const SceneContext& ctx,
 static ItemOutcome run_mpm_item(const SceneContext& ctx) {
   mpm::MpmParameters params = mpm_parameters(ctx);
   params.resume = ctx.resume;
-  auto progress = [](const std::string& line) { std::cerr << line << "\n"; };
+  auto progress = [&ctx](const std::string& line) { ctx.progress(line); };
   result::SimulationResult result = mpm::simulate_dcb(
       ctx.specimen(), ctx.material(), *ctx.law(), ctx.j_tip(), params, ctx.output_dir, progress);
   return report_simulation(ctx, std::move(result), "n_particles");

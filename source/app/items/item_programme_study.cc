@@ -25,7 +25,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <random>
 #include <sstream>
 
@@ -217,7 +216,7 @@ ItemOutcome run_programme_study_item(const SceneContext& ctx) {
       const std::string dir = sets_dir + "/" + p.name;
       o.n_generated += run_virtual_test(ctx, p.sets, dir, s.reuse);
       ++o.n_sets;
-      std::cout << "programme study: " << p.name << " ready" << std::endl;
+      ctx.progress("programme study: " + p.name + " ready");
       m.row({p.name + "/virtual_test", p.material, p.label}, {p.cycles, p.dc});
     }
     m.close();
@@ -234,7 +233,7 @@ ItemOutcome run_programme_study_item(const SceneContext& ctx) {
   sets.push_back("Output directory=" + o.campaign_dir);
   t0 = std::chrono::steady_clock::now();
   try {
-    run_scene(scene, sets);
+    run_scene(scene, sets, false, ctx.progress_sink);
     read_campaign(o.campaign_dir + "/summary.json", o);
   } catch (const std::exception& e) {
     // The campaign's refusal is the study's finding (its reason in the table), not a crash.

@@ -24,7 +24,6 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
-#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -223,8 +222,8 @@ result::SimulationResult run_ladder_level(const SceneContext& ctx, const Ladder&
   std::vector<std::string> sets;
   for (const auto& [k, v] : ladder.keys)
     sets.push_back(section_of(ladder.model) + "/" + k + "=" + v[l]);
-  std::cerr << "study: " << ladder.model << " level " << l << " (" << level_setting(ladder, l)
-            << ")\n";
+  ctx.progress("study: " + ladder.model + " level " + std::to_string(l) + " (" +
+               level_setting(ladder, l) + ")");
   // The level is the scene's own run with finer or coarser settings: everything earlier items
   // handed on (the fitted or identified law, identify's specimen and modulus) stays.
   SceneContext sub =
@@ -238,7 +237,7 @@ result::SimulationResult run_ladder_level(const SceneContext& ctx, const Ladder&
 /// outcomes here, not errors of the study).
 Json run_stability_case(const SceneContext& ctx, const Case& c, const std::string& model,
                         double plateau_tol) {
-  std::cerr << "study: stability " << c.name << " with " << model << "\n";
+  ctx.progress("study: stability " + c.name + " with " + model);
   std::string outcome, diagnosis;
   // The model's own steady-state status (issue 34): a run that stopped with an exception has none.
   std::string status = result::to_string(result::SteadyStateStatus::not_reached);

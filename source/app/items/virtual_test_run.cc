@@ -36,7 +36,7 @@ bool run_virtual_test(const SceneContext& ctx, const std::vector<std::string>& c
       read_text(stamp_file) == stamp)
     return false;
   std::filesystem::remove(stamp_file);
-  run_scene(ctx.scene_file, sets);
+  run_scene(ctx.scene_file, sets, false, ctx.progress_sink);
   std::ofstream(stamp_file) << stamp;
   return true;
 }

@@ -48,13 +48,14 @@ void check_scene(SceneContext& ctx) {
 }
 
 std::string run_scene(const std::string& prm_file, const std::vector<std::string>& overrides,
-                      bool resume) {
+                      bool resume, const std::function<void(const std::string&)>& progress) {
   const auto t0 = std::chrono::steady_clock::now();
   SceneContext ctx;
   ctx.params = read_scene_parameters(prm_file, overrides);
   const auto& wanted = ctx.parameters().run;
   std::set<std::string> wanted_set(wanted.begin(), wanted.end());
   ctx.scene_file = prm_file;
+  ctx.progress_sink = progress;
   ctx.run_items = wanted_set;
   // Every section the run will use is read and validated before anything is written: a bad value
   // in the section of the last item must not surface after the first item's minutes of work.
@@ -80,7 +81,7 @@ std::string run_scene(const std::string& prm_file, const std::vector<std::string
     if (!wanted_set.count(item.name) || ran_as_simulation_task(ctx, item.name, wanted_set))
       continue;
     if (writer)
-      std::cerr << "fiberbridge: running " << item.name << "\n";
+      ctx.progress("fiberbridge: running " + item.name);
     const auto ti = std::chrono::steady_clock::now();
     // A simulation is a unit of work that --resume restores once finished (resume_store.h).
     merge_outcome(ctx, item.name,

@@ -4,6 +4,8 @@
 #include "fiberbridge/app/scene/test_section.h"
 #include "fiberbridge/law/law_spec.h"
 
+#include <iostream>
+
 namespace fiberbridge::app {
 
 const char* law_source_name(LawSource source) {
@@ -51,6 +53,13 @@ analysis::RecordChainOptions SceneContext::record_chain() const {
                                                                  material());
 }
 
+void SceneContext::progress(const std::string& line) const {
+  if (progress_sink)
+    progress_sink(line);
+  else
+    std::cerr << line << '\n';
+}
+
 SceneContext SceneContext::derived(const std::string& dir, HandOn what,
                                    std::shared_ptr<const SceneParameters> parameters) const {
   SceneContext sub;
@@ -63,6 +72,7 @@ SceneContext SceneContext::derived(const std::string& dir, HandOn what,
   sub.output_dir = dir;
   sub.scene_file = scene_file;
   sub.resume = resume;
+  sub.progress_sink = progress_sink;
   sub.run_items = run_items;
   if (what == HandOn::everything) {
     sub.records = records;

@@ -40,6 +40,8 @@ _TEST = {"encoding": "Test/Encoding", "crack_length": "Test/Crack length",
 
 def _value(v):
     """A Python value as the text a .prm file would hold."""
+    if hasattr(v, "dtype") and hasattr(v, "item") and getattr(v, "ndim", 1) == 0:
+        v = v.item()  # a numpy scalar (np.float64, np.bool_, ...) as the Python number it holds
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, float):
@@ -297,15 +299,16 @@ class Campaign(Result):
                 f"ranking {' > '.join(self.ranking)})")
 
 
-def campaign(manifest, settings=None, **kwargs):
+def campaign(manifest, settings=None, progress=None, **kwargs):
     """A durability campaign (the manifest CSV of specimens: material, cycles, their record or
     R(delta) file or DIC set) reduced to Table 1 with intervals from the replicates, the
     degradation per property and the ranking with its confidence, as a scene's campaign computes
     it. The Campaign section's keys in settings ({"Campaign/Interval": "percentile"}), the
-    records' reading and specimen as in reduce. Writes nothing."""
+    records' reading and specimen as in reduce. Writes nothing. progress(line) gets a line per
+    group (and per simulation); Ctrl-C stops the call at the next one with KeyboardInterrupt."""
     s = ([f"Campaign/Manifest={manifest}"] +
          _settings("campaign", kwargs, [_SPECIMEN, _MATERIAL, _TEST], settings))
-    return Campaign(_core.campaign(s))
+    return Campaign(_core.campaign(s, progress))
 
 
 def simulate(law=None, model="beam", j_tip_J_m2=None, settings=None, progress=None, **kwargs):
@@ -353,8 +356,11 @@ def identify(files, columns=None, settings=None, progress=None, **kwargs):
     return out
 
 
-def run_scene(path, set=None, resume=False):
+def run_scene(path, set=None, resume=False, progress=None):
     """Runs a .prm scene as `fiberbridge run` does (its files in its Output directory) and returns
-    its summary.json as a dict. set={'Section/Key': value} as --set."""
+    its summary.json as a dict. set={'Section/Key': value} as --set. progress(line) gets the run's
+    progress lines (default: printed to stderr, as the command line prints them). Ctrl-C stops
+    the run at its next progress line: KeyboardInterrupt, and the output directory keeps its
+    marker of an incomplete run (no summary.json)."""
     s = [f"{k}={_value(v)}" for k, v in (set or {}).items()]
-    return _core.run_scene(str(path), s, resume)
+    return _core.run_scene(str(path), s, resume, progress)

@@ -16,6 +16,7 @@
 #include "fiberbridge/result/rcurve.h"
 #include "fiberbridge/specimen/specimen.h"
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -43,6 +44,13 @@ struct SceneContext {
   /// `fiberbridge run --resume`: units of work finished by an earlier run into this output
   /// directory are restored and checkpoints continued (resume_store.h, mpm/checkpoint.h).
   bool resume = false;
+  /// Where the run's progress lines go: standard error, as the command line prints them, unless
+  /// the caller gives its own (the Python module's run_scene, which checks for Ctrl-C at each line
+  /// and may throw RunInterrupted to stop the run; the run directory then stays marked
+  /// incomplete, run_directory.h). Handed on to derived contexts.
+  std::function<void(const std::string&)> progress_sink;
+  /// One progress line to progress_sink (or standard error).
+  void progress(const std::string& line) const;
 
   // ---- what earlier items hand on (typed; nothing is written back into the parameters). Set
   // only by the scene runner, from the items' outcomes (item_outcome.h).
