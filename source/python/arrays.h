@@ -2,7 +2,8 @@
 // Vectors of the typed API as numpy arrays. A vector whose values go out in the unit they have
 // inside (J/m^2, N, s) is moved into the array's owner, not copied; one that changes unit on the
 // way out (m -> mm, Pa -> kPa: the names carry the unit, as the CSV columns do) is scaled into a
-// new array. (Arrays come in as files today: the calls take paths.)
+// new array. Columns in memory come in as ColumnIn (a contiguous float64 view of what the caller
+// passed, converted only when it is not one) and are copied once into the typed API's vectors.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -26,6 +27,16 @@ inline py::array_t<double> scaled_array(const std::vector<double>& v, double uni
   for (std::size_t i = 0; i < v.size(); ++i)
     w(static_cast<py::ssize_t>(i)) = v[i] / unit;
   return out;
+}
+
+/// A 1-D float64 column handed in: numpy passes a C-contiguous float64 array as it is (no copy)
+/// and converts anything else (a list, int or float32 arrays, a strided slice) once.
+using ColumnIn = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// The column's values as the typed API's vector: one copy of the buffer.
+inline std::vector<double> vector_of(const ColumnIn& column) {
+  const double* p = column.data();
+  return std::vector<double>(p, p + column.size());
 }
 
 /// One field of each row (a struct per row: an R-curve point, a DIC record row) divided by `unit`,

@@ -84,14 +84,16 @@ void bind_law(py::module_& m) {
 
   m.def(
       "extract_columns",
-      [](std::vector<double> delta_mm, std::vector<double> R_J_m2, std::vector<double> a_mm,
-         std::vector<double> time_s, std::vector<std::string> replicate,
+      [](const ColumnIn& delta_mm, const ColumnIn& R_J_m2, const ColumnIn& a_mm,
+         const ColumnIn& time_s, std::vector<std::string> replicate,
          const std::vector<std::string>& settings) {
+        // One copy from the contiguous float64 buffers into the typed table (not a Python float
+        // per element, as a list conversion would make).
+        analysis::RDeltaColumns c{vector_of(delta_mm), vector_of(R_J_m2), vector_of(a_mm),
+                                  vector_of(time_s), std::move(replicate)};
         std::shared_ptr<const analysis::ExtractionOutcome> e;
         {
           py::gil_scoped_release free;
-          analysis::RDeltaColumns c{std::move(delta_mm), std::move(R_J_m2), std::move(a_mm),
-                                    std::move(time_s), std::move(replicate)};
           e = extract_with(settings,
                            std::make_shared<const analysis::RDeltaData>(
                                analysis::rdelta_from_columns("fiberbridge.extract (arrays)", c)));
