@@ -8,17 +8,7 @@
 #   python3 scripts/compare_outputs.py /tmp/cmp/before /tmp/cmp/after
 # Two MPI ranks may differ in a last digit between two runs of one binary (the order of the
 # reductions). About 2 minutes on 2 cores (3D: 1 minute). From the repository root.
-set -u
-bin=$(realpath "$1")
-root=$2
-rm -rf "$root"
-mkdir -p "$root"
-run() {
-  local name=$1
-  shift
-  "$bin" run "$@" --set "Output directory=$root/$name" >"$root/$name.log" 2>&1
-  echo "$name rc=$?"
-}
+source "$(dirname "$0")/check_runs_common.sh"
 # A law strong and short enough to switch to the crack-tip opening control (bordered Newton).
 snap=(--set "Cohesive law/Type=linear" --set "Cohesive law/Peak stress=30000"
   --set "Cohesive law/Delta c=0.02" --set "Cohesive law/J tip=100")

@@ -6,17 +6,7 @@
 #   bash scripts/refactor_check_runs.sh build/fiberbridge /tmp/cmp/after
 #   python3 scripts/compare_outputs.py /tmp/cmp/before /tmp/cmp/after
 # About 15 minutes on 2 cores (the chain study and identify dominate). From the repository root.
-set -u
-bin=$(realpath "$1")
-root=$2
-rm -rf "$root"
-mkdir -p "$root"
-run() {
-  local name=$1
-  shift
-  "$bin" run "$@" --set "Output directory=$root/$name" >"$root/$name.log" 2>&1
-  echo "$name rc=$?"
-}
+source "$(dirname "$0")/check_runs_common.sh"
 run default prm/default.prm
 run campaign_table1 prm/campaign_table1.prm
 run campaign_real_records prm/campaign_real_records.prm

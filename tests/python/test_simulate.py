@@ -96,7 +96,10 @@ def test_an_exception_in_progress_stops_the_run(fb):
 # Ctrl-C in a long call: the FEM at 0.5 mm elements takes about a minute (29 progress lines, one
 # every 2-3 s on this machine). SIGINT after the first line must end the call with
 # KeyboardInterrupt at the next line, well before the run would have finished.
-INTERRUPTED = """
+def interrupted_script(call):
+    """A script that runs `call` (with progress=progress) and prints how long after its first
+    progress line a KeyboardInterrupt stopped it (exit status 3)."""
+    return f"""
 import sys, time
 import fiberbridge as fb
 said = []
@@ -105,7 +108,7 @@ def progress(line):
         said.append(time.time())
         print("running", flush=True)
 try:
-    fb.simulate(model="fem", settings={"FEM/Element size": 0.5}, progress=progress)
+    {call}
     print("finished", flush=True)
 except KeyboardInterrupt:
     print("interrupted after %.1f s" % (time.time() - said[0]), flush=True)
@@ -113,12 +116,18 @@ except KeyboardInterrupt:
 """
 
 
-def test_ctrl_c_stops_a_long_call(tmp_path):
+INTERRUPTED = interrupted_script(
+    'fb.simulate(model="fem", settings={"FEM/Element size": 0.5}, progress=progress)')
+
+
+def seconds_to_stop_after_sigint(script, *args):
+    """Runs `script` in a fresh interpreter, sends SIGINT once it printed "running" (its first
+    progress line) and returns the seconds it says it took to stop with KeyboardInterrupt."""
     import signal
     import subprocess
     import sys
     import time
-    p = subprocess.Popen([sys.executable, "-c", INTERRUPTED], stdout=subprocess.PIPE,
+    p = subprocess.Popen([sys.executable, "-c", script, *args], stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE, text=True)
     try:
         assert p.stdout.readline().strip() == "running"
@@ -130,50 +139,25 @@ def test_ctrl_c_stops_a_long_call(tmp_path):
             p.kill()
     assert p.returncode == 3, (out, err)
     assert out.startswith("interrupted after"), (out, err)
-    assert float(out.split()[2]) < 15, out
+    return float(out.split()[2])
+
+
+def test_ctrl_c_stops_a_long_call():
+    assert seconds_to_stop_after_sigint(INTERRUPTED) < 15
 
 
 # run_scene sees Ctrl-C at every progress line of the scene too (items, models, nested scenes),
 # not only when the scene returns: the same FEM run as a scene. The run directory keeps the
 # marker of an incomplete run and gets no summary.json (app/outputs/run_directory.h).
-INTERRUPTED_SCENE = """
-import sys, time
-import fiberbridge as fb
-said = []
-def progress(line):
-    if not said:
-        said.append(time.time())
-        print("running", flush=True)
-try:
-    fb.run_scene("prm/control_pva.prm", set={"Run": "fem", "FEM/Element size": 0.5,
-                                             "Output directory": sys.argv[1]}, progress=progress)
-    print("finished", flush=True)
-except KeyboardInterrupt:
-    print("interrupted after %.1f s" % (time.time() - said[0]), flush=True)
-    sys.exit(3)
-"""
+INTERRUPTED_SCENE = interrupted_script(
+    'fb.run_scene("prm/control_pva.prm", set={"Run": "fem", "FEM/Element size": 0.5, '
+    '"Output directory": sys.argv[1]}, progress=progress)')
 
 
 def test_ctrl_c_stops_a_long_scene(tmp_path):
-    import signal
-    import subprocess
-    import sys
-    import time
     out = tmp_path / "out"
-    p = subprocess.Popen([sys.executable, "-c", INTERRUPTED_SCENE, str(out)],
-                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
-        assert p.stdout.readline().strip() == "running"
-        time.sleep(0.5)
-        p.send_signal(signal.SIGINT)
-        stdout, err = p.communicate(timeout=30)
-    finally:
-        if p.poll() is None:
-            p.kill()
-    assert p.returncode == 3, (stdout, err)
-    assert stdout.startswith("interrupted after"), (stdout, err)
     # The whole run takes about a minute; the stop comes at the next progress line.
-    assert float(stdout.split()[2]) < 15, stdout
+    assert seconds_to_stop_after_sigint(INTERRUPTED_SCENE, str(out)) < 15
     assert (out / "RUN_INCOMPLETE.txt").exists()
     assert not (out / "summary.json").exists()
 
