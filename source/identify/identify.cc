@@ -79,7 +79,7 @@ Identification identify_law(const std::vector<analysis::TestRecord>& records,
                         "); they were scored as carrying no load");
   out.forward_runs = counts.forward_runs;
   out.forward_time_s = counts.forward_time_s;
-  out.wall_time_s = detail::seconds_since(t0);
+  out.wall_time_s = seconds_since(t0);
   return out;
 }
 

@@ -4,6 +4,8 @@
 // openings, as weighted residuals.
 #include "prepared_record.h"
 
+#include "fiberbridge/core/clock.h"
+
 #include <array>
 #include <chrono>
 #include <string>
@@ -16,10 +18,6 @@ constexpr int n_parameters = 6;
 using Parameters = std::array<double, n_parameters>;
 extern const char* const parameter_names[n_parameters];
 extern const double parameter_units[n_parameters];
-
-inline double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 inline law::TrilinearParameters trilinear_of(const Parameters& p) {
   return {p[0], p[1], p[2], p[3], p[4]};

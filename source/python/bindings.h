@@ -1,5 +1,7 @@
 #pragma once
 // The module's parts (module.cc calls each): one file per part of the chain.
+#include "fiberbridge/core/clock.h"
+
 #include <pybind11/pybind11.h>
 
 #include <chrono>
@@ -17,11 +19,6 @@ void bind_simulate(py::module_& m); ///< simulate, run_scene (bind_simulate.cc)
 void bind_dic(py::module_& m);      ///< dic (bind_dic.cc)
 void bind_campaign(py::module_& m); ///< campaign (bind_campaign.cc)
 void bind_identify(py::module_& m); ///< identify (bind_identify.cc)
-
-/// Seconds since `t0` (steady clock).
-inline double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 /// The progress callback a long call hands its model: at each progress line, with the GIL held,
 /// Python's signal handlers run (Ctrl-C raises KeyboardInterrupt there), then `progress(line)`

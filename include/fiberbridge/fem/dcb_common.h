@@ -13,6 +13,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include "fiberbridge/core/clock.h"
+
 #include <chrono>
 #include <memory>
 #include <string>
@@ -21,9 +23,6 @@
 namespace fiberbridge::fem {
 
 using Clock = std::chrono::steady_clock;
-inline double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 /// Stiffness of the orthotropic wood with 1 = L along x, 2 = T along y (normal to the crack
 /// plane), 3 = R along z (out of plane in 2D, across the width in 3D).

@@ -18,6 +18,7 @@
 #include "fiberbridge/app/scene/scene_reader.h"
 #include "fiberbridge/app/scene/section.h"
 #include "fiberbridge/app/scene/test_section.h"
+#include "fiberbridge/core/clock.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
@@ -343,8 +344,7 @@ namespace {
 /// seconds counted from `t0`.
 std::string group_progress_line(std::size_t done, std::size_t all, const analysis::CampaignGroup& g,
                                 std::chrono::steady_clock::time_point t0) {
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = seconds_since(t0);
   return "campaign: group " + std::to_string(done) + "/" + std::to_string(all) + " " + g.material +
          " at " + fmt(g.cycles) + " cycles (" + std::to_string(g.members.size()) + " specimens, " +
          std::to_string(g.samples.size()) + " bootstrap samples), " + fmt(seconds, 3) + " s";

@@ -13,6 +13,7 @@
 #include "fiberbridge/app/run/scene_runner.h"
 #include "fiberbridge/app/scene/scene_reader.h"
 #include "fiberbridge/app/scene/section.h"
+#include "fiberbridge/core/clock.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
 #include "fiberbridge/core/units.h"
@@ -71,10 +72,6 @@ struct ChainStudySection {
     identify = prm.get_bool("Identify");
   }
 };
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 /// The recovered numbers from the chain scene's summary.json (analysis_steps.cc writes them).
 void read_recovered(const std::string& summary_path, ChainRow& row) {

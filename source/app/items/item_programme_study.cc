@@ -13,6 +13,7 @@
 #include "fiberbridge/app/run/scene_runner.h"
 #include "fiberbridge/app/scene/scene_reader.h"
 #include "fiberbridge/app/scene/section.h"
+#include "fiberbridge/core/clock.h"
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/format.h"
@@ -71,10 +72,6 @@ struct ProgrammeStudySection {
     campaign_sets = split_list(prm.get("Campaign settings"), ';');
   }
 };
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 std::string read_text(const std::string& path) {
   std::ifstream f(path);
