@@ -158,8 +158,8 @@ std::string optimizer_job(const std::vector<PreparedRecord>& prepared,
                           const std::string& label, std::vector<double> u, double tolerance,
                           double initial_step) {
   Misfit misfit(prepared, settings, forward);
-  ObjectiveData data{&misfit,   &mapping, 0, std::numeric_limits<double>::infinity(),
-                     &progress, label, nullptr};
+  ObjectiveData data{&misfit,   &mapping, 0,      std::numeric_limits<double>::infinity(),
+                     &progress, label,    nullptr};
   nlopt::result code{};
   const double f = run_optimizer(settings, data, tolerance, initial_step, u, code);
   ByteWriter w;
