@@ -17,6 +17,13 @@ for r in red.records:
     print(f"{r.name}: a0 {r.a0_mm:.1f} mm, plateau energy {m['energy']['plateau_J_m2']:.0f}, "
           f"MBT {m['MBT']['plateau_J_m2']:.0f}, CBBM {m['CBBM']['plateau_J_m2']:.0f} J/m^2")
 
+# The law needs R against the notch-root opening (Eq. 5/6), and the four shared records measured
+# none (no delta_root column: data/dcb_records/README.md). So the law comes from the bundled
+# R(delta) sample: synthetic replicates of the seed's PVA control law by its Eq. 2, with noise
+# (data/sample_rdelta_pva_control.csv says how it was made).
+# A record that did measure delta_root (a DIC record from fb.dic, a clip gauge) goes straight on:
+# ext = fb.extract(fb.reduce(my_records, ...)), and fit_trilinear then corrects the law by
+# simulating those records.
 ext = fb.extract("data/sample_rdelta_pva_control.csv")
 fit = fb.fit_trilinear(ext)
 print(f"J_tip {ext.J_tip_J_m2:.0f} J/m^2, G_ss {ext.G_ss_J_m2:.0f} J/m^2, delta_c "

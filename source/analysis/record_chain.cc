@@ -19,15 +19,18 @@ std::vector<TestRecord> read_records(const std::vector<std::string>& files,
                                      const RecordReadOptions& read) {
   std::vector<TestRecord> records;
   for (const auto& f : files)
-    for (auto& rec : read_test_records(f, read)) {
-      for (const auto& other : records)
-        if (other.name == rec.name)
-          throw InputError(rec.source + ": record name '" + rec.name +
-                           "' repeats a record already read from " + other.source +
-                           "; give each record its own name");
-      records.push_back(std::move(rec));
-    }
+    for (auto& rec : read_test_records(f, read))
+      add_record(records, std::move(rec));
   return records;
+}
+
+void add_record(std::vector<TestRecord>& records, TestRecord record) {
+  for (const auto& other : records)
+    if (other.name == record.name)
+      throw InputError(record.source + ": record name '" + record.name +
+                       "' repeats a record already read from " + other.source +
+                       "; give each record its own name");
+  records.push_back(std::move(record));
 }
 
 RecordChainOptions with_specimen_overrides(RecordChainOptions o, double width, double arm_thickness,

@@ -75,8 +75,8 @@ void filter(Rows& r, const std::vector<bool>& keep) {
 
 class RecordCleaner {
 public:
-  RecordCleaner(const ExportedTable& t, const RecordColumns& c, const RecordReadOptions& o)
-      : t_(t), c_(c), o_(o) {}
+  RecordCleaner(const RowOrigin& origin, const RecordColumns& c, const RecordReadOptions& o)
+      : origin_(origin), c_(c), o_(o) {}
 
   TestRecord clean(const std::string& name, const std::vector<std::size_t>& rows) {
     name_ = name;
@@ -117,14 +117,14 @@ public:
 
     TestRecord out;
     out.name = name;
-    out.source = t_.source();
+    out.source = origin_.source;
     out.time = r.time;
     out.opening = r.opening;
     out.load = r.load;
     out.crack_length = r.a;
     out.delta_root = r.root;
     for (std::size_t row : r.row)
-      out.line.push_back(t_.line_of_row(row));
+      out.line.push_back(origin_.line_of_row(row));
     if (!out.crack_length.empty()) {
       count_repeated_readings(out);
       name_trailing_block(r);
@@ -135,10 +135,10 @@ public:
 
 private:
   std::string line(const Rows& r, std::size_t i) const {
-    return std::to_string(t_.line_of_row(r.row[i]));
+    return std::to_string(origin_.line_of_row(r.row[i]));
   }
   std::string at(const Rows& r, std::size_t i) const {
-    return t_.source() + ":" + line(r, i) + ": ";
+    return origin_.source + ":" + line(r, i) + ": ";
   }
   std::string lines(const Rows& r, std::size_t first, std::size_t last) const {
     return first == last ? "line " + line(r, first)
@@ -177,7 +177,7 @@ private:
       filter(r, keep);
     }
     if (r.row.empty())
-      throw InputError(t_.source() + ": " + label() +
+      throw InputError(origin_.source + ": " + label() +
                        " has no row with both a load and an opening value");
   }
 
@@ -200,7 +200,7 @@ private:
     flip(r.load, "load_N", 1.0, "N");
     flip(r.opening, "opening_mm", mm, "mm");
     if (!(peak(r) > 0))
-      throw InputError(t_.source() + ": " + label() + " (" + lines(r, 0, r.row.size() - 1) +
+      throw InputError(origin_.source + ": " + label() + " (" + lines(r, 0, r.row.size() - 1) +
                        ") never carries a positive load_N; nothing to reduce");
   }
 
@@ -303,7 +303,7 @@ private:
     say(s + "): the crack length there is unknown (NaN); their load and opening are kept.");
     if (std::none_of(r.a.begin(), r.a.end(), [](double a) { return !std::isnan(a); })) {
       if (o_.crack_length == CrackLengthSource::measured)
-        throw InputError(t_.source() + ": " + label() + " (" + lines(r, 0, r.row.size() - 1) +
+        throw InputError(origin_.source + ": " + label() + " (" + lines(r, 0, r.row.size() - 1) +
                          ") has no crack reading in any row, and Crack length = measured");
       say("No row has a crack reading: the record is read as one without crack readings.");
       r.a.clear();
@@ -714,7 +714,7 @@ private:
 
   void check_rows_and_growth(const Rows& r) const {
     if (r.row.size() < min_rows)
-      throw InputError(t_.source() + ": " + label() + " has " + std::to_string(r.row.size()) +
+      throw InputError(origin_.source + ": " + label() + " has " + std::to_string(r.row.size()) +
                        " rows after cleaning (" + lines(r, 0, r.row.size() - 1) + "); at least " +
                        std::to_string(min_rows) + " are needed");
     if (r.a.empty())
@@ -757,7 +757,7 @@ private:
         " % of its peak: kept, their load and opening count for the energy.");
   }
 
-  const ExportedTable& t_;
+  const RowOrigin& origin_;
   const RecordColumns& c_;
   const RecordReadOptions& o_;
   std::string name_;
@@ -766,9 +766,9 @@ private:
 
 } // namespace
 
-TestRecord clean_record(const ExportedTable& t, const RecordColumns& c, const std::string& name,
+TestRecord clean_record(const RowOrigin& origin, const RecordColumns& c, const std::string& name,
                         const std::vector<std::size_t>& rows, const RecordReadOptions& o) {
-  return RecordCleaner(t, c, o).clean(name, rows);
+  return RecordCleaner(origin, c, o).clean(name, rows);
 }
 
 } // namespace fiberbridge::analysis

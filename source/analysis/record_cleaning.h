@@ -3,13 +3,21 @@
 // docs/design.md section 6 the classes of fault and why each is fixed or refused).
 #include "record_columns.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace fiberbridge::analysis {
 
-/// Cleans the rows `rows` (indices into `t`, file order) of record `name`.
-TestRecord clean_record(const ExportedTable& t, const RecordColumns& c, const std::string& name,
+/// Where the rows came from, for messages: the file (or the arrays' name) and the line each row
+/// was read from (for arrays in memory, the row's own 1-based number).
+struct RowOrigin {
+  std::string source;
+  std::function<std::size_t(std::size_t)> line_of_row;
+};
+
+/// Cleans the rows `rows` (indices into `c`'s columns, file order) of record `name`.
+TestRecord clean_record(const RowOrigin& origin, const RecordColumns& c, const std::string& name,
                         const std::vector<std::size_t>& rows, const RecordReadOptions& o);
 
 } // namespace fiberbridge::analysis

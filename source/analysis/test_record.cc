@@ -105,10 +105,55 @@ std::vector<TestRecord> read_test_records(const std::string& path,
     for (std::size_t row = 0; row < t.n_rows(); ++row)
       rows[0][row] = row;
   }
+  const RowOrigin origin{t.source(), [&t](std::size_t row) { return t.line_of_row(row); }};
   std::vector<TestRecord> records;
   for (std::size_t k = 0; k < names.size(); ++k)
-    records.push_back(clean_record(t, c, names[k], rows[k], options));
+    records.push_back(clean_record(origin, c, names[k], rows[k], options));
   return records;
+}
+
+TestRecord clean_test_record(const TestRecord& given, const RecordReadOptions& options,
+                             double crack_code_unit) {
+  const std::string& where = given.source;
+  const std::size_t n = given.load.size();
+  if (given.opening.size() != n)
+    throw InputError(where + ": opening_mm has " + std::to_string(given.opening.size()) +
+                     " values and load_N " + std::to_string(n) + "; expected one of each per row");
+  const auto check = [&](const std::vector<double>& v, const char* column) {
+    if (!v.empty() && v.size() != n)
+      throw InputError(where + ": " + column + " has " + std::to_string(v.size()) + " values for " +
+                       std::to_string(n) +
+                       " rows of load_N; expected one per row or none (no such column)");
+  };
+  check(given.time, "time_s");
+  check(given.crack_length, "a_mm");
+  check(given.delta_root, "delta_root_mm");
+
+  RecordColumns c;
+  c.opening = given.opening;
+  c.load = given.load;
+  c.has_time = !given.time.empty();
+  c.time = given.time;
+  c.has_root = !given.delta_root.empty();
+  c.root = given.delta_root;
+  if (options.crack_length == CrackLengthSource::equivalent) {
+    c.notes.push_back("Crack readings not used (Crack length = equivalent): R against the "
+                      "equivalent crack length from the compliance.");
+  } else if (given.crack_length.empty()) {
+    if (options.crack_length == CrackLengthSource::measured)
+      throw InputError(where + ": no a_mm column; expected crack-length readings (Crack "
+                               "length = measured)");
+    c.notes.push_back("No a_mm column: the record has no crack readings.");
+  } else {
+    c.has_crack = true;
+    c.crack = given.crack_length;
+    c.crack_factor = crack_code_unit;
+  }
+  std::vector<std::size_t> rows(n);
+  for (std::size_t k = 0; k < n; ++k)
+    rows[k] = k;
+  const RowOrigin origin{where, [](std::size_t row) { return row + 1; }};
+  return clean_record(origin, c, given.name, rows, options);
 }
 
 std::vector<std::size_t> crack_reading_rows(const TestRecord& r) {

@@ -1,12 +1,16 @@
 #pragma once
 // Vectors of the typed API as numpy arrays. A vector whose values go out in the unit they have
-// inside (J/m^2, N, s) is moved into the array's owner, not copied; one that changes unit on the
-// way out (m -> mm, Pa -> kPa: the names carry the unit, as the CSV columns do) is scaled into a
-// new array. Columns in memory come in as ColumnIn (a contiguous float64 view of what the caller
-// passed, converted only when it is not one) and are copied once into the typed API's vectors.
+// inside (J/m^2, N, s) is not copied: moved into the array's owner when the call made it, or
+// viewed read-only in the outcome that holds it (the array keeps the outcome alive; an outcome is
+// handed on to later calls, so its values may not be changed through the view). One that changes
+// unit on the way out (m -> mm, Pa -> kPa: the names carry the unit, as the CSV columns do) is
+// scaled into a new array. Columns in memory come in as ColumnIn (a contiguous float64 view of what
+// the caller passed, converted only when it is not one) and are copied once into the typed API's
+// vectors.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <memory>
 #include <vector>
 
 namespace fiberbridge::python {
@@ -18,6 +22,23 @@ inline py::array_t<double> moved_array(std::vector<double>&& v) {
   auto* owner = new std::vector<double>(std::move(v));
   py::capsule free_owner(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
   return py::array_t<double>({owner->size()}, {sizeof(double)}, owner->data(), free_owner);
+}
+
+/// A Python object that keeps `p`'s object alive as long as it lives: the base of views into it.
+template <class T>
+py::object keeper_of(std::shared_ptr<T> p) {
+  return py::capsule(new std::shared_ptr<T>(std::move(p)),
+                     [](void* q) { delete static_cast<std::shared_ptr<T>*>(q); });
+}
+
+/// The vector's values as a read-only 1-D float64 view (no copy); `owner` keeps the object that
+/// holds the vector alive (keeper_of, or the Python object of a bound outcome).
+inline py::array_t<double> viewed_array(const std::vector<double>& v, const py::object& owner) {
+  if (v.empty())
+    return py::array_t<double>(0);
+  py::array_t<double> a({v.size()}, {sizeof(double)}, v.data(), owner);
+  py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return a;
 }
 
 /// The vector's values divided by `unit` (1e-3 for mm) as a new 1-D float64 array.

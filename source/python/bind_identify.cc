@@ -4,6 +4,7 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "python_scene.h"
+#include "record_input.h"
 
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
@@ -23,7 +24,7 @@ namespace {
 using units::kPa;
 using units::mm;
 
-py::dict record_fit_dict(const identify::RecordFit& r) {
+py::dict record_fit_dict(const identify::RecordFit& r, const py::object& owner) {
   py::dict d;
   d["name"] = r.name;
   d["initial_crack_mm"] = r.initial_crack / mm;
@@ -32,9 +33,9 @@ py::dict record_fit_dict(const identify::RecordFit& r) {
   d["load_rms_rel"] = r.load_rms_rel;
   d["crack_rms_mm"] = r.crack_rms / mm;
   d["opening_mm"] = scaled_array(r.opening, mm);
-  d["load_N"] = scaled_array(r.load, 1);
+  d["load_N"] = viewed_array(r.load, owner);
   d["crack_length_mm"] = scaled_array(r.crack_length, mm);
-  d["model_load_N"] = scaled_array(r.model_load, 1);
+  d["model_load_N"] = viewed_array(r.model_load, owner);
   d["model_crack_length_mm"] = scaled_array(r.model_crack_length, mm);
   return d;
 }
@@ -45,14 +46,21 @@ py::dict record_fit_dict(const identify::RecordFit& r) {
 void bind_identify(py::module_& m) {
   m.def(
       "identify",
-      [](const std::vector<std::string>& settings, const py::object& progress) -> py::dict {
+      [](const py::list& items, const std::vector<std::string>& settings,
+         const py::object& progress) -> py::dict {
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
+        const std::vector<RecordIn> in = records_in(items);
         const auto lines = progress_lines(progress);
         identify::Identification id;
         std::shared_ptr<const std::vector<analysis::TestRecord>> records;
         {
           py::gil_scoped_release free;
-          const app::SceneContext ctx = call_context("fiberbridge.identify", settings, "identify");
+          app::SceneContext ctx = call_context("fiberbridge.identify", settings, "identify");
+          if (in.empty())
+            throw InputError("fiberbridge.identify: no records given");
+          // The records read (or cleaned) as reduce reads them: identify fits these.
+          ctx.records = std::make_shared<const std::vector<analysis::TestRecord>>(
+              read_records_in(in, ctx.record_chain().read));
           id = app::identify_scene_records(ctx, lines, records);
         }
         py::dict d;
@@ -75,8 +83,11 @@ void bind_identify(py::module_& m) {
           estimates[py::str(p.name)] = py::make_tuple(p.value, p.std_error);
         d["estimates"] = estimates;
         py::list recs;
-        for (const auto& r : id.records)
-          recs.append(record_fit_dict(r));
+        const auto kept =
+            std::make_shared<const std::vector<identify::RecordFit>>(std::move(id.records));
+        const py::object owner = keeper_of(kept);
+        for (const auto& r : *kept)
+          recs.append(record_fit_dict(r, owner));
         d["records"] = recs;
         d["band_delta_mm"] = scaled_array(id.band_delta, mm);
         d["band_sigma_kPa"] = scaled_array(id.band_sigma, kPa);
@@ -86,13 +97,15 @@ void bind_identify(py::module_& m) {
         d["law_si"] = std::vector<double>{id.law.d1, id.law.s1, id.law.d2, id.law.s2, id.law.dc};
         return d;
 #else
+        (void)items;
         (void)settings;
         (void)progress;
         throw InputError("fiberbridge.identify: identify is not available in this build");
 #endif
       },
-      py::arg("settings"), py::arg("progress") = py::none(),
-      "identify's joint fit of Test/Files with the Identify section (writes nothing).");
+      py::arg("records"), py::arg("settings"), py::arg("progress") = py::none(),
+      "identify's joint fit of the records (files, or records as arrays) with the Identify "
+      "section (writes nothing).");
 }
 
 } // namespace fiberbridge::python

@@ -34,8 +34,9 @@ py::dict extraction_dict(const std::shared_ptr<const analysis::ExtractionOutcome
   d["area_eq5_J_m2"] = e->laws.area_eq6;
   d["area_dRdd_J_m2"] = e->laws.area_dRdd;
   d["curve_delta_mm"] = scaled_array(e->curve.delta, mm);
-  d["curve_R_J_m2"] = scaled_array(e->curve.R, 1);
-  d["curve_R_std_J_m2"] = scaled_array(e->curve.R_std, 1);
+  const py::object owner = py::cast(e);
+  d["curve_R_J_m2"] = viewed_array(e->curve.R, owner);
+  d["curve_R_std_J_m2"] = viewed_array(e->curve.R_std, owner);
   d["replicates"] = e->curve.n_replicates;
   d["J_tip_J_m2"] = e->steady.j_tip;
   d["G_ss_J_m2"] = e->steady.G_ss;
@@ -44,7 +45,7 @@ py::dict extraction_dict(const std::shared_ptr<const analysis::ExtractionOutcome
   d["J_tip_automatic"] = e->steady.j_tip_automatic;
   d["criterion"] = e->steady.criterion;
   d["averaging"] = e->curve.report;
-  d["outcome"] = e;
+  d["outcome"] = owner;
   return d;
 }
 

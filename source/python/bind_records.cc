@@ -4,11 +4,13 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "python_scene.h"
+#include "record_input.h"
 
 #include "fiberbridge/analysis/record_chain.h"
 #include "fiberbridge/app/items/reduce_step.h"
 #include "fiberbridge/app/scene/step_outcomes.h"
 #include "fiberbridge/app/scene/test_section.h"
+#include "fiberbridge/core/error.h"
 #include "fiberbridge/core/units.h"
 
 #include <pybind11/stl.h>
@@ -57,24 +59,24 @@ py::dict methods_dict(const Reduced& r) {
   return methods;
 }
 
-py::dict reduced_dict(const analysis::ReducedRecord& r) {
+py::dict reduced_dict(const analysis::ReducedRecord& r, const py::object& owner) {
   py::dict d;
   d["name"] = r.name;
   d["source"] = r.source;
   d["crack"] = r.crack;
   d["a_mm"] = scaled_array(r.a, mm);
   d["da_mm"] = scaled_array(r.da, mm);
-  d["load_N"] = scaled_array(r.load, 1);
+  d["load_N"] = viewed_array(r.load, owner);
   d["opening_mm"] = scaled_array(r.opening, mm);
-  d["R_energy_J_m2"] = scaled_array(r.R_energy, 1);
-  d["R_energy_lo_J_m2"] = scaled_array(r.R_energy_lo, 1);
-  d["R_energy_hi_J_m2"] = scaled_array(r.R_energy_hi, 1);
-  d["R_MBT_J_m2"] = scaled_array(r.R_MBT, 1);
-  d["R_CC_J_m2"] = scaled_array(r.R_CC, 1);
-  d["R_MCC_J_m2"] = scaled_array(r.R_MCC, 1);
+  d["R_energy_J_m2"] = viewed_array(r.R_energy, owner);
+  d["R_energy_lo_J_m2"] = viewed_array(r.R_energy_lo, owner);
+  d["R_energy_hi_J_m2"] = viewed_array(r.R_energy_hi, owner);
+  d["R_MBT_J_m2"] = viewed_array(r.R_MBT, owner);
+  d["R_CC_J_m2"] = viewed_array(r.R_CC, owner);
+  d["R_MCC_J_m2"] = viewed_array(r.R_MCC, owner);
   d["delta_root_mm"] = scaled_array(r.delta_root, mm);
   d["a_eq_mm"] = scaled_array(r.a_eq, mm);
-  d["R_CBBM_J_m2"] = scaled_array(r.R_CBBM, 1);
+  d["R_CBBM_J_m2"] = viewed_array(r.R_CBBM, owner);
   d["a0_mm"] = r.a0 / mm;
   d["window_mm"] = r.window / mm;
   d["methods"] = methods_dict(r);
@@ -83,30 +85,28 @@ py::dict reduced_dict(const analysis::ReducedRecord& r) {
   return d;
 }
 
-py::dict mean_dict(const analysis::ReducedMean& m) {
+py::dict mean_dict(const analysis::ReducedMean& m, const py::object& owner) {
   py::dict d;
   d["n_records"] = m.n_records;
   d["da_mm"] = scaled_array(m.da, mm);
-  d["R_energy_J_m2"] = scaled_array(m.R_energy, 1);
-  d["R_energy_std_J_m2"] = scaled_array(m.R_energy_std, 1);
-  d["R_MBT_J_m2"] = scaled_array(m.R_MBT, 1);
-  d["R_CC_J_m2"] = scaled_array(m.R_CC, 1);
-  d["R_MCC_J_m2"] = scaled_array(m.R_MCC, 1);
-  d["R_CBBM_J_m2"] = scaled_array(m.R_CBBM, 1);
+  d["R_energy_J_m2"] = viewed_array(m.R_energy, owner);
+  d["R_energy_std_J_m2"] = viewed_array(m.R_energy_std, owner);
+  d["R_MBT_J_m2"] = viewed_array(m.R_MBT, owner);
+  d["R_CC_J_m2"] = viewed_array(m.R_CC, owner);
+  d["R_MCC_J_m2"] = viewed_array(m.R_MCC, owner);
+  d["R_CBBM_J_m2"] = viewed_array(m.R_CBBM, owner);
   d["methods"] = methods_dict(m);
   return d;
 }
 
-/// The Test section's read and reduce settings with `files` as its records, as reduce_options of
-/// the scene item (items/item_reduce.cc) makes them.
-app::ReduceStepOptions reduce_options_of(const std::vector<std::string>& files,
-                                         const std::vector<std::string>& settings,
+/// The Test, Specimen and Material sections' read and reduce settings, as reduce_options of the
+/// scene item (items/item_reduce.cc) makes them; the records are the call's own.
+app::ReduceStepOptions reduce_options_of(const std::vector<std::string>& settings,
                                          const std::string& where) {
   const app::SceneContext ctx = call_context(where, settings, "reduce");
   app::ReduceStepOptions o;
   static_cast<analysis::RecordChainOptions&>(o) = ctx.record_chain();
   o.where = where + ": Specimen";
-  o.files = files;
   return o;
 }
 
@@ -136,32 +136,41 @@ void bind_records(py::module_& m) {
 
   m.def(
       "reduce",
-      [](const std::vector<std::string>& files, const std::vector<std::string>& settings) {
+      [](const py::list& items, const std::vector<std::string>& settings,
+         const py::object& progress) {
+        const std::vector<RecordIn> in = records_in(items);
+        const auto lines = progress_lines(progress);
         std::shared_ptr<app::ReduceOutcome> r;
         app::ReduceStepOptions o;
         double compute_s = 0;
         Json summary;
         {
           py::gil_scoped_release free;
-          o = reduce_options_of(files, settings, "fiberbridge.reduce");
+          o = reduce_options_of(settings, "fiberbridge.reduce");
+          if (in.empty())
+            throw InputError("fiberbridge.reduce: no records given");
+          o.specimen.check_test_geometry(o.where);
           const auto t0 = std::chrono::steady_clock::now();
-          r = std::make_shared<app::ReduceOutcome>(app::reduce_records(o));
+          r = std::make_shared<app::ReduceOutcome>(
+              app::reduce_records(o, read_records_in(in, o.read), lines));
           compute_s = seconds_since(t0);
           summary = app::reduce_summary_block(o, *r);
         }
+        const py::object owner = py::cast(r);
         py::dict d;
         py::list records;
         for (const auto& rec : r->reduced)
-          records.append(reduced_dict(rec));
+          records.append(reduced_dict(rec, owner));
         d["records"] = records;
-        d["mean"] = mean_dict(r->mean);
+        d["mean"] = mean_dict(r->mean, owner);
         d["summary"] = python_of_json_text(summary.dump());
-        d["outcome"] = r;
+        d["outcome"] = owner;
         d["compute_s"] = compute_s; // the reduction alone, for the call-overhead benchmark
         return d;
       },
-      py::arg("files"), py::arg("settings"),
-      "R(a) of the records by every method, as a scene's reduce computes it (nothing written).");
+      py::arg("records"), py::arg("settings"), py::arg("progress") = py::none(),
+      "R(a) of the records (files, or records as arrays) by every method, as a scene's reduce "
+      "computes it (nothing written).");
 }
 
 } // namespace fiberbridge::python

@@ -450,3 +450,67 @@ TEST(RecordFaults, NoiseBandIsTakenAfterTheZeroOffset) {
   EXPECT_TRUE(contains(m, "is negative beyond reading noise")) << m;
   EXPECT_TRUE(contains(m, "after removing the zero offset 112")) << m;
 }
+
+// A script's arrays (the Python module's records in memory, clean_test_record) go through the
+// file's cleaning: the same faults injected give the same record, value for value, and the same
+// sentences; only the line numbers differ (a file's line is its row + 2, an array's row + 1).
+TEST(RecordFaults, ArraysInMemoryAreCleanedAsTheirFile) {
+  auto rows = raw_rows();
+  rows[150][2] = fmt(1.5 * value(rows[150][2])); // a load spike
+  rows[200][3] = "-999";                         // a crack tracker's dropout code
+  TempFile f("arrays.csv", rows);
+  const TestRecord from_file = read_test_records(f.path()).at(0);
+  TestRecord given;
+  given.name = "S1";
+  given.source = "arrays of S1";
+  for (const auto& r : rows) {
+    given.time.push_back(value(r[0]));
+    given.opening.push_back(value(r[1]) * mm);
+    given.load.push_back(value(r[2]));
+    given.crack_length.push_back(value(r[3]) * mm);
+  }
+  const TestRecord from_arrays = clean_test_record(given);
+  EXPECT_EQ(from_arrays.name, "S1");
+  EXPECT_EQ(from_arrays.source, "arrays of S1");
+  ASSERT_EQ(from_arrays.load.size(), from_file.load.size());
+  for (std::size_t i = 0; i < from_file.load.size(); ++i) {
+    ASSERT_EQ(from_arrays.line[i] + 1, from_file.line[i]) << "row " << i;
+    ASSERT_DOUBLE_EQ(from_arrays.time[i], from_file.time[i]) << "row " << i;
+    ASSERT_DOUBLE_EQ(from_arrays.opening[i], from_file.opening[i]) << "row " << i;
+    ASSERT_DOUBLE_EQ(from_arrays.load[i], from_file.load[i]) << "row " << i;
+    ASSERT_EQ(std::isnan(from_arrays.crack_length[i]), std::isnan(from_file.crack_length[i]));
+    if (!std::isnan(from_file.crack_length[i]))
+      ASSERT_DOUBLE_EQ(from_arrays.crack_length[i], from_file.crack_length[i]) << "row " << i;
+  }
+  const std::string c = all(from_arrays.cleaning);
+  EXPECT_EQ(from_arrays.cleaning.size(), from_file.cleaning.size()) << c;
+  EXPECT_TRUE(contains(c, "single-row spike(s) in load_N (first on line 151,")) << c;
+  EXPECT_TRUE(contains(c, "dropout")) << c;
+}
+
+TEST(RecordFaults, ArraysOfDifferentLengthsOrWithoutCrackWhenMeasuredAreRefused) {
+  TestRecord given;
+  given.name = "S1";
+  given.source = "arrays of S1";
+  given.opening = {0, 1e-3, 2e-3};
+  given.load = {0, 10};
+  const auto refused = [](const TestRecord& g, const RecordReadOptions& o) -> std::string {
+    try {
+      clean_test_record(g, o);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(refused(given, {}), "arrays of S1: opening_mm has 3 values and load_N 2; expected one "
+                                "of each per row");
+  given.load = {0, 10, 20};
+  given.crack_length = {0.03, 0.031};
+  EXPECT_TRUE(contains(refused(given, {}), "arrays of S1: a_mm has 2 values for 3 rows"));
+  given.crack_length.clear();
+  RecordReadOptions measured;
+  measured.crack_length = CrackLengthSource::measured;
+  EXPECT_TRUE(contains(refused(given, measured), "arrays of S1: no a_mm column"));
+  // Three rows pass the columns' checks and are then refused as a file of three rows is.
+  EXPECT_TRUE(contains(refused(given, {}), "arrays of S1")) << refused(given, {});
+}

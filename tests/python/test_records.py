@@ -114,7 +114,7 @@ def test_dic_gives_the_scene_s_record_on_a_virtual_test(fb, tmp_path):
     run_cli("run", "prm/fem_virtual_test_pva.prm", "--set", f"Output directory={vt}")
     scene = vt / "virtual_test" / "dic_scene.prm"
     out = tmp_path / "dic_out"
-    run_cli("run", str(scene), "--set", "Run=dic", "--set", f"Output directory={out}")
+    run_cli("run", str(scene), "--set", "Run=dic, reduce", "--set", f"Output directory={out}")
     settings = prm_section(scene, "DIC")
     del settings["DIC/Frames"]
     r = fb.dic(str(vt / "virtual_test" / "frames" / "dcb_*.csv"),
@@ -130,3 +130,12 @@ def test_dic_gives_the_scene_s_record_on_a_virtual_test(fb, tmp_path):
     with pytest.raises(fb.InputError, match="DIC/Frames"):
         fb.dic(str(tmp_path / "none_*.csv"), vt / "virtual_test" / "machine.csv",
                initial_crack_mm=100, settings=settings)
+    # The DicResult goes on to reduce as the scene's dic_record.csv does. The CSV holds 10
+    # digits, the DicResult every bit: on this record the plateaus agree to 1e-9, so 1e-7.
+    specimen = {**prm_section(scene, "Specimen"), **prm_section(scene, "Material")}
+    red = fb.reduce(r, settings=specimen)
+    scene_red = read_summary(out)["reduce"]["records"][0]
+    assert red.records[0].delta_root_mm.size > 10  # R(delta_root) for extract
+    for method in ("energy", "MBT", "CBBM"):
+        assert red.records[0].methods[method]["plateau_J_m2"] == pytest.approx(
+            scene_red[method]["plateau_J_m2"], rel=1e-7), method

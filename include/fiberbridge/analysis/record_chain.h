@@ -33,6 +33,10 @@ void set_crack_length(RecordChainOptions& o, const std::string& word, const std:
 std::vector<TestRecord> read_records(const std::vector<std::string>& files,
                                      const RecordReadOptions& read);
 
+/// Appends `record` to `records`; throws InputError when its name repeats one there (naming both
+/// sources): the records of a reduction are told apart by name in every table.
+void add_record(std::vector<TestRecord>& records, TestRecord record);
+
 /// `specimen` with what one specimen's own measurements replace (a campaign row's width, arm
 /// thickness, length, a0; NaN: not given). The a0 replaces the Specimen's where the reduction
 /// uses the Specimen's, and is the a0 of a record without crack readings.

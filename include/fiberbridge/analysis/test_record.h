@@ -107,6 +107,18 @@ struct RecordReadOptions {
 std::vector<TestRecord> read_test_records(const std::string& path,
                                           const RecordReadOptions& options = {});
 
+/// A record handed in as columns in memory (a script's arrays), cleaned exactly as
+/// read_test_records cleans a file's rows, with the same refusals. `given` holds the name, the
+/// source that messages name (line k there is row k of the arrays, from 1) and the columns in SI,
+/// NaN for a missing cell; time, crack_length and delta_root may be empty (no such column),
+/// opening and load are required, every column given has one value per row. `options`' crack
+/// length source applies (equivalent ignores the crack column; measured requires it); its column
+/// map and encoding do not. Dropout codes of the crack column (-999, 9999, ...) are recognised in
+/// `crack_code_unit` (the unit the caller's values were written in; mm from Python). Throws
+/// InputError naming the source for columns of different lengths and whatever the reader refuses.
+TestRecord clean_test_record(const TestRecord& given, const RecordReadOptions& options = {},
+                             double crack_code_unit = 1e-3);
+
 /// Rows of `r` where a new crack reading is made: the first row with a reading, and every row
 /// whose reading differs from the last reading before it (rows without a reading (NaN) and rows
 /// repeating a stale reading are skipped). Empty when the record has no crack readings.

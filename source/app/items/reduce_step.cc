@@ -27,11 +27,23 @@ ReduceOutcome reduce_records(const ReduceStepOptions& o) {
   if (o.files.empty())
     throw InputError(o.where + ": no record files given");
   o.specimen.check_test_geometry(o.where);
-  // Read every record, reduce each to R(a), average them.
+  return reduce_records(o, analysis::read_records(o.files, o.read));
+}
+
+ReduceOutcome reduce_records(const ReduceStepOptions& o, std::vector<analysis::TestRecord> records,
+                             const std::function<void(const std::string&)>& progress) {
+  if (records.empty())
+    throw InputError(o.where + ": no records given");
+  o.specimen.check_test_geometry(o.where);
+  // Reduce each record to R(a), average them.
   ReduceOutcome r;
-  r.records = analysis::read_records(o.files, o.read);
-  for (const auto& rec : r.records)
+  r.records = std::move(records);
+  for (const auto& rec : r.records) {
+    if (progress)
+      progress("reduce: " + rec.name + " (" + std::to_string(r.reduced.size() + 1) + "/" +
+               std::to_string(r.records.size()) + ")");
     r.reduced.push_back(analysis::reduce_record(rec, o.specimen, o.reduce));
+  }
   r.mean = analysis::average_reduced(r.reduced, o.reduce.plateau_fraction);
   return r;
 }

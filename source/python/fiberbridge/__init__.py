@@ -174,16 +174,67 @@ def read_record(path, columns=None, settings=None, **kwargs):
     return records[0]
 
 
-def reduce(files, columns=None, settings=None, **kwargs):
-    """R(a) of the records of `files` (one path or several) by direct energy, MBT, CC, MCC and
-    CBBM, their initiation and plateau values and mean, as a scene's reduce computes them. The
-    specimen: width_mm, height_mm (both arms), length_mm, initial_crack_mm; the material: E_L_MPa,
-    ...; the reading: columns, encoding, crack_length, smoothing_window_mm, ... Nothing is
-    written."""
-    if isinstance(files, (str, bytes)) or hasattr(files, "__fspath__"):
-        files = [files]
+_RECORD_COLUMNS = ("time_s", "opening_mm", "load_N", "a_mm", "delta_root_mm")
+
+
+def _record_items(where, records):
+    """The records of a call as _core takes them: a path as str, a record in memory as a dict of
+    its name, source and columns. A record in memory is a Record (read_record's), a DicResult, or
+    a mapping of columns (a dict of arrays, a pandas DataFrame) with opening_mm and load_N,
+    optionally time_s, a_mm, delta_root_mm and name."""
+    if isinstance(records, (str, bytes)) or hasattr(records, "__fspath__") or \
+            isinstance(records, Result) or hasattr(records, "keys"):
+        records = [records]
+    items = []
+    for k, r in enumerate(records):
+        if isinstance(r, (str, bytes)) or hasattr(r, "__fspath__"):
+            items.append(str(r) if not isinstance(r, bytes) else r.decode())
+            continue
+        if isinstance(r, Result):
+            data = {c: getattr(r, c) for c in _RECORD_COLUMNS if hasattr(r, c)}
+            name = getattr(r, "name", None)
+        elif hasattr(r, "keys"):
+            keys = set(r.keys())
+            unknown = keys - set(_RECORD_COLUMNS) - {"name"}
+            if unknown:
+                raise InputError(f"fiberbridge.{where}: records[{k}] has unknown column(s) "
+                                 f"{', '.join(sorted(map(str, unknown)))}; expected "
+                                 f"{', '.join(_RECORD_COLUMNS)} (opening_mm and load_N required) "
+                                 "and optionally name")
+            data = {c: r[c] for c in _RECORD_COLUMNS if c in keys}
+            name = r["name"] if "name" in keys and isinstance(r["name"], str) else None
+        else:
+            raise TypeError(f"fiberbridge.{where}: records[{k}] is a {type(r).__name__}; expected "
+                            "a path, a Record (fb.read_record), a DicResult (fb.dic) or a "
+                            "mapping of columns")
+        missing = [c for c in ("opening_mm", "load_N") if c not in data]
+        if missing:
+            raise InputError(f"fiberbridge.{where}: records[{k}] has no {' or '.join(missing)}; "
+                             "a record needs opening_mm and load_N")
+        name = name or f"record{k + 1}"
+        item = {"name": name,
+                "source": f"fiberbridge.{where}: records[{k}] '{name}' (arrays; line n is row n, "
+                          "from 1)"}
+        for c, v in data.items():
+            # A column of no values (read_record's for a column the file lacks) is no column.
+            item[c] = None if v is None or np.size(v) == 0 else np.asarray(v, dtype=float).ravel()
+        items.append(item)
+    return items
+
+
+def reduce(records, columns=None, settings=None, progress=None, **kwargs):
+    """R(a) of the records by direct energy, MBT, CC, MCC and CBBM, their initiation and plateau
+    values and mean, as a scene's reduce computes them. `records`: one or several, each a file
+    path, a Record (fb.read_record's, its arrays edited or not), a DicResult (fb.dic's) or a
+    mapping of columns in memory (a dict of numpy arrays, a pandas DataFrame: opening_mm, load_N,
+    optionally time_s, a_mm, delta_root_mm, name), cleaned as the reader cleans a file's rows.
+    The specimen: width_mm, height_mm (both arms), length_mm, initial_crack_mm; the material:
+    E_L_MPa, ...; the reading: columns, encoding, crack_length, smoothing_window_mm, ...
+    progress(line) gets a line per record; Ctrl-C stops the call there. Nothing is written.
+    Arrays in J/m^2 and N are read-only views of the result (copy to change them)."""
+    items = _record_items("reduce", records)
     s = _columns(columns) + _settings("reduce", kwargs, [_SPECIMEN, _MATERIAL, _TEST], settings)
-    r = _core.reduce([str(f) for f in files], s)
+    r = _core.reduce(items, s, progress)
     out = Reduction({"records": [ReducedRecord(x) for x in r["records"]],
                      "mean": Result(r["mean"]), "summary": r["summary"],
                      "compute_s": r["compute_s"]})
@@ -333,19 +384,19 @@ def simulate(law=None, model="beam", j_tip_J_m2=None, settings=None, progress=No
     return Simulation(_core.simulate(model, s, tri, j_tip_J_m2, progress))
 
 
-def identify(files, columns=None, settings=None, progress=None, **kwargs):
+def identify(records, columns=None, settings=None, progress=None, **kwargs):
     """The law from load, opening and crack readings alone (no delta_root): identify's joint fit
-    of the records of `files` with the Identify section (settings={"Identify/Starts": 1, ...}),
-    as a scene's identify fits them, on this process. The specimen and material as reduce takes
-    them. Returns the trilinear law (delta1_mm, sigma1_kPa, ..., J_tip_J_m2), its estimates with
-    standard errors, each record's fit (records[k]: model_load_N against load_N, ...), the
-    law's band and the notes; .law is a TrilinearFit for simulate. progress: as simulate's
-    (the fit's progress lines; Ctrl-C is seen there). Nothing is written."""
-    if isinstance(files, (str, bytes)) or hasattr(files, "__fspath__"):
-        files = [files]
-    s = ([f"Test/Files={', '.join(str(f) for f in files)}"] + _columns(columns) +
+    of the records with the Identify section (settings={"Identify/Starts": 1, ...}), as a scene's
+    identify fits them, on this process. `records` as reduce takes them (paths, Records,
+    DicResults, mappings of columns). The specimen and material as reduce takes them. Returns the
+    trilinear law (delta1_mm, sigma1_kPa, ..., J_tip_J_m2), its estimates with standard errors,
+    each record's fit (records[k]: model_load_N against load_N, ...), the law's band and the
+    notes; .law is a TrilinearFit for simulate. progress: as simulate's (the fit's progress
+    lines; Ctrl-C is seen there). Nothing is written."""
+    items = _record_items("identify", records)
+    s = (_columns(columns) +
          _settings("identify", kwargs, [_SPECIMEN, _MATERIAL, _TEST], settings))
-    fields = _core.identify(s, progress)
+    fields = _core.identify(items, s, progress)
     law_si = fields.pop("law_si")
     fields["records"] = [Result(r) for r in fields["records"]]
     out = Identification(fields)

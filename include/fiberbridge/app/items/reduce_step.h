@@ -5,6 +5,7 @@
 #include "fiberbridge/app/scene/step_outcomes.h"
 #include "fiberbridge/specimen/specimen.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,12 @@ namespace fiberbridge::app {
 /// Reads and reduces every record and averages them, writing nothing (the Python module's
 /// reduce). Throws InputError for no files, a specimen without its geometry, and the records'.
 ReduceOutcome reduce_records(const ReduceStepOptions& o);
+
+/// The same on records already read (`o.files` unused): records a script handed in as arrays
+/// (analysis::clean_test_record) or read beforehand. `progress`, when given, gets a line before
+/// each record and may throw to stop the reduction (the Python module's Ctrl-C).
+ReduceOutcome reduce_records(const ReduceStepOptions& o, std::vector<analysis::TestRecord> records,
+                             const std::function<void(const std::string&)>& progress = {});
 
 /// summary.json's `reduce` block of an outcome of `o`.
 Json reduce_summary_block(const ReduceStepOptions& o, const ReduceOutcome& r);
