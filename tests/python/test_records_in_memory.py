@@ -85,6 +85,10 @@ def test_bad_columns_in_memory_are_input_errors_naming_the_record(fb):
         r"records\[0\] 'S1' \(arrays; line n is row n, from 1\).*201")
     with pytest.raises(TypeError, match=r"records\[1\] is a int"):
         fb.reduce([rec, 3], **SPECIMEN)
+    # A reduced record has a row per crack reading, not the test's rows: not a record.
+    reduced = fb.reduce(rec, **SPECIMEN).records[0]
+    with pytest.raises(TypeError, match=r"records\[0\] is a ReducedRecord"):
+        fb.reduce(reduced, **SPECIMEN)
 
 
 def test_arrays_in_their_own_unit_are_read_only_views_that_keep_the_result(fb):

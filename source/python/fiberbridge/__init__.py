@@ -190,9 +190,14 @@ def _record_items(where, records):
         if isinstance(r, (str, bytes)) or hasattr(r, "__fspath__"):
             items.append(str(r) if not isinstance(r, bytes) else r.decode())
             continue
-        if isinstance(r, Result):
+        if isinstance(r, (Record, DicResult)):
             data = {c: getattr(r, c) for c in _RECORD_COLUMNS if hasattr(r, c)}
             name = getattr(r, "name", None)
+        elif isinstance(r, Result):
+            # A reduction's record holds one row per crack reading, not the test's rows.
+            raise TypeError(f"fiberbridge.{where}: records[{k}] is a {r._kind}; expected a path, "
+                            "a Record (fb.read_record), a DicResult (fb.dic) or a mapping of "
+                            "columns")
         elif hasattr(r, "keys"):
             keys = set(r.keys())
             unknown = keys - set(_RECORD_COLUMNS) - {"name"}
