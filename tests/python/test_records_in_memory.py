@@ -77,6 +77,8 @@ def test_bad_columns_in_memory_are_input_errors_naming_the_record(fb):
     bad(fb, {"opening_mm": rec.opening_mm, "load_kN": rec.load_N / 1e3},
         r"unknown column\(s\) load_kN; expected time_s, opening_mm, load_N")
     bad(fb, [rec, rec], "record name 'DCB-01_Toughness' repeats a record")
+    bad(fb, {"opening_mm": rec.opening_mm, "load_N": ["1.5 kN"] * n},
+        r"records\[0\] 'record1': column load_N is not numbers")
     # What the reader refuses in a file it refuses in arrays, naming the row: crack readings
     # 5 mm behind the ones before from row 201 on (a crack does not heal).
     a = rec.a_mm.copy()

@@ -222,7 +222,14 @@ def _record_items(where, records):
                           "from 1)"}
         for c, v in data.items():
             # A column of no values (read_record's for a column the file lacks) is no column.
-            item[c] = None if v is None or np.size(v) == 0 else np.asarray(v, dtype=float).ravel()
+            if v is None or np.size(v) == 0:
+                item[c] = None
+                continue
+            try:
+                item[c] = np.asarray(v, dtype=float).ravel()
+            except (TypeError, ValueError) as e:
+                raise InputError(f"fiberbridge.{where}: records[{k}] '{name}': column {c} is not "
+                                 f"numbers ({e})") from None
         items.append(item)
     return items
 
