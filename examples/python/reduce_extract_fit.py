@@ -42,7 +42,12 @@ except ImportError:
 else:
     fig, ax = plt.subplots(1, 2, figsize=(10, 4))
     for r in red.records:
-        ax[0].plot(r.a_mm, r.R_energy_J_m2, label=r.name)
+        # The direct-energy R with its band: on these step-wise readings the pointwise R swings
+        # by hundreds of J/m^2 (docs/verification.md, "The shared real records"), the band says
+        # how far one reading can be trusted.
+        line, = ax[0].plot(r.a_mm, r.R_energy_J_m2, label=r.name)
+        ax[0].fill_between(r.a_mm, r.R_energy_lo_J_m2, r.R_energy_hi_J_m2,
+                           color=line.get_color(), alpha=0.15, linewidth=0)
     ax[0].set_xlabel("a (mm)")
     ax[0].set_ylabel("R, direct energy (J/m$^2$)")
     ax[0].legend()
