@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <utility>
 
 namespace fiberbridge::analysis {
 
@@ -112,9 +113,9 @@ std::vector<TestRecord> read_test_records(const std::string& path,
   return records;
 }
 
-TestRecord clean_test_record(const TestRecord& given, const RecordReadOptions& options,
+TestRecord clean_test_record(TestRecord given, const RecordReadOptions& options,
                              double crack_code_unit) {
-  const std::string& where = given.source;
+  const std::string where = given.source;
   const std::size_t n = given.load.size();
   if (given.opening.size() != n)
     throw InputError(where + ": opening_mm has " + std::to_string(given.opening.size()) +
@@ -130,12 +131,12 @@ TestRecord clean_test_record(const TestRecord& given, const RecordReadOptions& o
   check(given.delta_root, "delta_root_mm");
 
   RecordColumns c;
-  c.opening = given.opening;
-  c.load = given.load;
+  c.opening = std::move(given.opening);
+  c.load = std::move(given.load);
   c.has_time = !given.time.empty();
-  c.time = given.time;
+  c.time = std::move(given.time);
   c.has_root = !given.delta_root.empty();
-  c.root = given.delta_root;
+  c.root = std::move(given.delta_root);
   if (options.crack_length == CrackLengthSource::equivalent) {
     c.notes.push_back("Crack readings not used (Crack length = equivalent): R against the "
                       "equivalent crack length from the compliance.");
@@ -146,7 +147,7 @@ TestRecord clean_test_record(const TestRecord& given, const RecordReadOptions& o
     c.notes.push_back("No a_mm column: the record has no crack readings.");
   } else {
     c.has_crack = true;
-    c.crack = given.crack_length;
+    c.crack = std::move(given.crack_length);
     c.crack_factor = crack_code_unit;
   }
   std::vector<std::size_t> rows(n);

@@ -49,7 +49,7 @@ void bind_identify(py::module_& m) {
       [](const py::list& items, const std::vector<std::string>& settings,
          const py::object& progress) -> py::dict {
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
-        const std::vector<RecordIn> in = records_in(items);
+        std::vector<RecordIn> in = records_in(items);
         const auto lines = progress_lines(progress);
         identify::Identification id;
         std::shared_ptr<const std::vector<analysis::TestRecord>> records;
@@ -60,7 +60,7 @@ void bind_identify(py::module_& m) {
             throw InputError("fiberbridge.identify: no records given");
           // The records read (or cleaned) as reduce reads them: identify fits these.
           ctx.records = std::make_shared<const std::vector<analysis::TestRecord>>(
-              read_records_in(in, ctx.record_chain().read));
+              read_records_in(std::move(in), ctx.record_chain().read));
           id = app::identify_scene_records(ctx, lines, records);
         }
         py::dict d;

@@ -138,7 +138,7 @@ void bind_records(py::module_& m) {
       "reduce",
       [](const py::list& items, const std::vector<std::string>& settings,
          const py::object& progress) {
-        const std::vector<RecordIn> in = records_in(items);
+        std::vector<RecordIn> in = records_in(items);
         const auto lines = progress_lines(progress);
         std::shared_ptr<app::ReduceOutcome> r;
         app::ReduceStepOptions o;
@@ -152,7 +152,7 @@ void bind_records(py::module_& m) {
           o.specimen.check_test_geometry(o.where);
           const auto t0 = std::chrono::steady_clock::now();
           r = std::make_shared<app::ReduceOutcome>(
-              app::reduce_records(o, read_records_in(in, o.read), lines));
+              app::reduce_records(o, read_records_in(std::move(in), o.read), lines));
           compute_s = seconds_since(t0);
           summary = app::reduce_summary_block(o, *r);
         }

@@ -4,6 +4,8 @@
 
 #include "fiberbridge/core/units.h"
 
+#include <utility>
+
 namespace fiberbridge::python {
 
 namespace {
@@ -44,12 +46,13 @@ std::vector<RecordIn> records_in(const py::list& items) {
   return out;
 }
 
-std::vector<analysis::TestRecord> read_records_in(const std::vector<RecordIn>& in,
+std::vector<analysis::TestRecord> read_records_in(std::vector<RecordIn> in,
                                                   const analysis::RecordReadOptions& read) {
   std::vector<analysis::TestRecord> records;
-  for (const auto& r : in) {
+  for (auto& r : in) {
     if (r.path.empty())
-      analysis::add_record(records, analysis::clean_test_record(r.arrays, read, units::mm));
+      analysis::add_record(records,
+                           analysis::clean_test_record(std::move(r.arrays), read, units::mm));
     else
       for (auto& rec : analysis::read_test_records(r.path, read))
         analysis::add_record(records, std::move(rec));

@@ -25,9 +25,10 @@ struct RecordIn {
 /// columns, copied once into SI vectors.
 std::vector<RecordIn> records_in(const py::list& items);
 
-/// Every record of the entries in order, read or cleaned with `read` (no GIL needed). Throws
-/// InputError as the reader does, and for a name that repeats.
-std::vector<analysis::TestRecord> read_records_in(const std::vector<RecordIn>& in,
+/// Every record of the entries in order, read or cleaned with `read` (no GIL needed); the
+/// entries' columns are moved into the cleaning. Throws InputError as the reader does, and for a
+/// name that repeats.
+std::vector<analysis::TestRecord> read_records_in(std::vector<RecordIn> in,
                                                   const analysis::RecordReadOptions& read);
 
 } // namespace fiberbridge::python

@@ -116,7 +116,8 @@ std::vector<TestRecord> read_test_records(const std::string& path,
 /// map and encoding do not. Dropout codes of the crack column (-999, 9999, ...) are recognised in
 /// `crack_code_unit` (the unit the caller's values were written in; mm from Python). Throws
 /// InputError naming the source for columns of different lengths and whatever the reader refuses.
-TestRecord clean_test_record(const TestRecord& given, const RecordReadOptions& options = {},
+/// `given` is taken by value: its columns are moved into the cleaning, not copied again.
+TestRecord clean_test_record(TestRecord given, const RecordReadOptions& options = {},
                              double crack_code_unit = 1e-3);
 
 /// Rows of `r` where a new crack reading is made: the first row with a reading, and every row
