@@ -102,6 +102,8 @@ public:
   double x_tip() const { return x_st_[tip_]; }
   /// x-station index of the tip (station_opening's ix).
   unsigned tip_station() const { return tip_; }
+  /// The initial notch root's station (the sawn notch's tip, x = a0).
+  unsigned notch_station() const { return notch_; }
   const std::vector<double>& point_z() const { return point_z_; }
   const std::vector<dof_index>& load_top() const { return load_top_; }
   const std::vector<dof_index>& load_bottom() const { return load_bottom_; }

@@ -767,11 +767,19 @@ result::RCurvePoint DcbModel<dim>::record_advance() {
   pt.a = x_tip;
   const auto nodal = crack_.node_openings(u_ghost_);
   const double dc = law_->critical_opening();
+  // The zone's root and its opening (delta_c once the notch root has failed), for R_J and Eq. 2.
+  double zone_root_opening = 0;
   if (dc <= 0) {
     pt.root = x_tip;
     pt.delta_root = 0;
-  } else
-    std::tie(pt.root, pt.delta_root) = crack_.notch_root(o, nodal, dc, width_);
+  } else {
+    std::tie(pt.root, zone_root_opening) = crack_.notch_root(o, nodal, dc, width_);
+    // delta_root is the opening at the initial notch root, as a clip gauge or the virtual
+    // extensometer reads it and as the beam and the MPM report it: past delta_c once the root
+    // has failed (the zone's own root then holds delta_c). A simulated record's delta_root (the
+    // fit's correction, identify) and R(delta_root) beside other models need this one.
+    pt.delta_root = crack_.station_opening(crack_.notch_station(), nodal, width_);
+  }
   pt.zone_length = x_tip - pt.root;
   const unsigned tip = crack_.tip_station();
   if (tip > 0)
@@ -783,8 +791,8 @@ result::RCurvePoint DcbModel<dim>::record_advance() {
     pt.J_tip = tip_j();
     pt.J_ff = far_field_j();
   }
-  pt.R_J = pt.J_ff - 0.5 * pt.delta_root * law_->envelope(pt.delta_root);
-  pt.R_eq2 = law::r_curve_eq2(*law_, j_tip_, pt.delta_root);
+  pt.R_J = pt.J_ff - 0.5 * zone_root_opening * law_->envelope(zone_root_opening);
+  pt.R_eq2 = law::r_curve_eq2(*law_, j_tip_, zone_root_opening);
 
   const double P = load_per_width();
   pt.load = P * B;

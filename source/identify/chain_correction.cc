@@ -179,6 +179,7 @@ ChainCorrection correct_chain(const std::vector<analysis::TestRecord>& records,
                               const MeasuringChain& chain, const ForwardModel& model,
                               const ChainCorrectionSettings& settings) {
   ChainCorrection out;
+  out.forward_model = model.name;
   out.measured = measured;
   const Vec m = to_vec(measured);
   if (specimens.size() != records.size())

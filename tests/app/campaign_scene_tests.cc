@@ -109,8 +109,10 @@ TEST(CampaignScene, LawsBackInTheSpecimenWithTheBeam) {
 // model registry). Every group's simulated plateau is the group's G_ss: the FEM reaches
 // J_tip + J_c of a trilinear law to about 0.05 % (docs/verification.md) and the group's G_ss is
 // its law's J_tip + J_c up to the fit; measured at most 0.04 %, 0.5 % allowed. The R(delta_root)
-// misfit of the adhesives (G_B 300-900 J/m^2) was 1.0-1.6 % of G_B, 3 % allowed (the beam test
-// above allows 6 % for the beam's larger R_energy lag). Solid wood (DF) is only checked on its
+// misfit over the law's range [0, delta_c] (the FEM's delta_root reads on past delta_c since
+// session 31; there its R_energy carries the specimen's far end, compared by G_ss instead) of the
+// adhesives (G_B 300-900 J/m^2) is 1.0-1.6 % of G_B (measured 0.97-1.63 %), 3 % allowed (the beam
+// test above allows 6 % for the beam's larger R_energy lag). Solid wood (DF) is only checked on its
 // plateau: its G_B is 60-330 J/m^2, and the FEM's R_energy before the root moves sits ~3.5 % of
 // J_tip below J_tip, which is 2-8 % of so small a G_B.
 TEST(CampaignScene, LawsBackInTheSpecimenWithTheFemByDefault) {

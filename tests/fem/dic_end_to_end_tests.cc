@@ -193,17 +193,18 @@ analysis::RDeltaData fem_own_rdelta(const result::SimulationResult& sim) {
 }
 
 /// Eq. 6 on one R(delta_root) against the input law (compare_law_routes' eq6 route). delta_c: the
-/// data's end (FEM rows: they stop at delta_c, the root's opening once it has failed) or the
-/// automatic steady-state criterion (the DIC record: the extensometer reads on past delta_c, so
+/// input law's (the FEM's own rows, compared with the law on the law's range: their delta_root,
+/// the initial notch root's opening, reads on past delta_c once the root has failed) or the
+/// automatic steady-state criterion (the records: the extensometer reads on past delta_c, so
 /// R(delta_root) has its plateau, as a real test's).
 analysis::RouteLaw eq6_route(const analysis::RDeltaData& data, const law::TractionLaw& input,
-                             double j_tip, bool delta_c_at_end, int half_width,
+                             double j_tip, bool delta_c_of_the_law, int half_width,
                              double* delta_c = nullptr) {
   const auto curve = analysis::average_replicates(data, 401);
   analysis::SteadyStateOptions so;
   so.j_tip = j_tip;
-  if (delta_c_at_end)
-    so.delta_c = curve.delta.back();
+  if (delta_c_of_the_law)
+    so.delta_c = std::min(curve.delta.back(), input.critical_opening());
   const auto steady = analysis::find_steady_state(curve, so, data.source);
   std::printf("%s: %s\n", data.source.c_str(), steady.criterion.c_str());
   if (delta_c)

@@ -323,6 +323,18 @@ TEST(FemParameters, RejectsBadValues) {
                InputError);
 }
 
+namespace {
+/// The short DCB with the rigid linear law as a user types it (sigma_c 1000 kPa, delta_c
+/// 0.4 mm, J_tip 200), 1 mm elements, run 8 mm past the steady-state onset.
+result::SimulationResult rigid_linear_run(double sc, double dc, double j_tip) {
+  fem::FemParameters prm;
+  prm.mesh.element_size = 1 * mm;
+  prm.steady_state.window = 8 * mm;
+  return fem::simulate_dcb(short_dcb(), specimen::Material(), law::make_linear_softening(sc, dc),
+                           j_tip, prm);
+}
+} // namespace
+
 // A rigid law (linear softening as the user types it) is regularized by the model itself with a
 // stiff elastic rise. The tip element then holds openings from 0 to delta_1 (the first node
 // behind the tip) over which the traction drops from sigma_c: the composite rule with m
@@ -332,13 +344,9 @@ TEST(FemDcb, RigidLawIsInsertedExtrinsicallyWithoutALastingError) {
   // follow the analytic R = J_tip + s_c delta_root / 2 at every advance, and plateau at J_tip +
   // the law's area. 0.5 % is the bound and the same budget as the regularized run above
   // (path dependence of the FE J, integration of the tractions over the zone).
-  const auto spec = short_dcb();
-  fem::FemParameters prm;
-  prm.mesh.element_size = 1 * mm;
-  prm.steady_state.window = 8 * mm;
   const double sc = 1000 * kPa, dc = 0.4 * mm, j_tip = 200;
   const auto law = law::make_linear_softening(sc, dc);
-  const auto r = fem::simulate_dcb(spec, specimen::Material(), law, j_tip, prm);
+  const auto r = rigid_linear_run(sc, dc, j_tip);
   ASSERT_TRUE(r.reached_steady_state);
   bool noted = false;
   for (const auto& n : r.notes)
@@ -492,4 +500,39 @@ TEST(FemParameters, SolverChoices) {
   p.parse_parameters(prm);
   EXPECT_EQ(p.linear.solver, fem::FemParameters::Linear::Solver::mumps);
   EXPECT_ANY_THROW(prm.parse_input_from_string("set Linear solver = pardiso\n"));
+}
+
+// delta_root is the opening at the initial notch root (a clip gauge's, the virtual extensometer's,
+// the beam's and the MPM's), also once the root has failed and the zone's own root moved on: it
+// then passes delta_c and keeps growing, without a jump where the root fails (the zone root's
+// opening is delta_c there). It used to stay at delta_c (the zone root's opening), so a record
+// simulated from the FEM (the fit's correction) ended its R(delta_root) at delta_c.
+TEST(FemDcb, NotchRootOpeningIsReadAtTheInitialNotchPastDeltaC) {
+  const auto spec = short_dcb();
+  const double dc = 0.4 * mm;
+  const auto r = rigid_linear_run(1000 * kPa, dc, 200);
+  ASSERT_TRUE(r.reached_steady_state);
+  double previous = 0, largest_before = 0, step_at_failure = 0;
+  int past = 0;
+  for (const auto& p : r.rcurve) {
+    const double step = p.delta_root - previous;
+    EXPECT_GE(step, 0) << "a = " << p.a / mm << " mm";
+    if (p.root > spec.initial_crack + 0.5 * mm) {
+      EXPECT_GT(p.delta_root, dc) << "a = " << p.a / mm << " mm";
+      if (past++ == 0)
+        step_at_failure = step;
+    } else {
+      EXPECT_LT(p.delta_root, dc) << "a = " << p.a / mm << " mm";
+      largest_before = std::max(largest_before, step);
+    }
+    previous = p.delta_root;
+  }
+  EXPECT_GE(past, 3);
+  // One 1 mm advance opens the notch root by about 0.03 mm here, before and after the failure:
+  // no jump where the reading passes from the zone's root to the notch.
+  EXPECT_LE(step_at_failure, largest_before);
+  std::printf("notch-root opening past delta_c: %d advances, %.4f mm at the end (delta_c %.1f "
+              "mm), step at the failure %.4f mm, largest before %.4f mm\n",
+              past, r.rcurve.back().delta_root / mm, dc / mm, step_at_failure / mm,
+              largest_before / mm);
 }

@@ -57,6 +57,7 @@ struct ChainCorrection {
   std::vector<std::string> notes;
   int forward_runs = 0;
   double forward_time_s = 0;
+  std::string forward_model = "beam"; ///< the ForwardModel's name: what simulated the records
 };
 
 /// The records a test of `sim` would have written, row by row at `measured`'s openings (and

@@ -85,6 +85,13 @@ GroupSimulation simulate_group(const SceneContext& ctx, const analysis::Campaign
     double ss = 0;
     int n = 0, inside = 0;
     for (std::size_t i = 0; i < c.delta.size(); ++i) {
+      // Over the law's range: past delta_c R(delta_root) is the plateau, compared as G_ss above,
+      // and a finite specimen's released energy per growth there carries its far end (the FEM on
+      // PVA's 16-cycle law, zone 138 mm: R_energy falls from 734 to 681 J/m^2 as the front runs
+      // from 240 to 250 mm of 300, while R_J stays at G_ss, 753; docs/verification.md, "The laws
+      // back in the specimen"). What the law decides is the rise.
+      if (c.delta[i] > g.estimate.delta_c)
+        break;
       const double sim = analysis::interpolate_within(s.delta_root, s.R, c.delta[i]);
       if (!std::isfinite(sim))
         continue;

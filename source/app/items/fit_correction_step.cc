@@ -2,6 +2,7 @@
 #include "fiberbridge/app/items/fit_correction_step.h"
 
 #include "fiberbridge/analysis/record_reduction.h"
+#include "fiberbridge/app/scene/models.h"
 #include "fiberbridge/app/scene/step_outcomes.h"
 #include "fiberbridge/beam/dcb_beam.h"
 #include "fiberbridge/identify/forward_model.h"
@@ -13,6 +14,18 @@
 #include <string>
 
 namespace fiberbridge::app {
+
+identify::ForwardModel correction_forward_model(const SceneContext& ctx) {
+  if (fit_correction_mode(ctx) != "fem")
+    return identify::beam_forward_model(ctx.parameters().section<beam::BeamParameters>("Beam"));
+  // The FEM through the model registry (the app's adapter, items/fem_forward_model.cc): the
+  // scene's FEM section, each run on MPI_COMM_SELF, writing nothing.
+  const SimulationModel* fem = built_model("fem");
+  if (!fem || !fem->identify_forward)
+    throw InputError(ctx.scene_file + ": Fit/Model correction = fem needs a build with the FEM "
+                                      "(FIBERBRIDGE_MODELS); use beam");
+  return fem->identify_forward(ctx);
+}
 
 identify::ChainCorrection correct_fit_by_simulation(const SceneContext& ctx,
                                                     const analysis::ExtractionOutcome& extraction,
@@ -34,8 +47,7 @@ identify::ChainCorrection correct_fit_by_simulation(const SceneContext& ctx,
     return identify::ChainEstimate{analysis::fit_extracted_law(e, fit_options).law, e.steady.j_tip};
   };
   const SpecimenSetup setup = ctx.specimen_setup();
-  const auto model =
-      identify::beam_forward_model(ctx.parameters().section<beam::BeamParameters>("Beam"));
+  const identify::ForwardModel model = correction_forward_model(ctx);
   const auto& records = ctx.reduced->records;
   return identify::correct_chain(
       records, std::vector<specimen::Specimen>(records.size(), setup.specimen), setup.material,
@@ -61,8 +73,7 @@ group_law_correction(const SceneContext& ctx, const analysis::CampaignOptions& o
     return {};
   const identify::ChainCorrectionSettings settings = fit_correction_settings(ctx);
   const specimen::Material material = ctx.material();
-  const identify::ForwardModel model =
-      identify::beam_forward_model(ctx.parameters().section<beam::BeamParameters>("Beam"));
+  const identify::ForwardModel model = correction_forward_model(ctx);
   analysis::CampaignOptions plain = options;
   plain.correct_law = {};
   return [settings, material, model,

@@ -63,6 +63,12 @@ void write_extraction(const analysis::ExtractionOutcome& e, const analysis::Extr
                        {"peak_ratio_eq5_over_dRdd", json_number(peak_eq6 / peak_dRdd)}};
 }
 
+Json trilinear_json(const law::TrilinearParameters& t) {
+  return {{"delta1_mm", t.d1 / mm},   {"sigma1_kPa", t.s1 / kPa}, {"delta2_mm", t.d2 / mm},
+          {"sigma2_kPa", t.s2 / kPa}, {"delta_c_mm", t.dc / mm},  {"J1_J_m2", t.j1()},
+          {"J2_J_m2", t.j2()}};
+}
+
 void write_trilinear_fit(const analysis::TrilinearFit& fit, const std::string& out_dir,
                          ItemReport& report) {
   const auto& t = fit.law;
@@ -78,16 +84,11 @@ void write_trilinear_fit(const analysis::TrilinearFit& fit, const std::string& o
     w.row({t.dc / mm, 0.0});
     w.close();
   }
-  report["trilinear"] = {{"delta1_mm", t.d1 / mm},
-                         {"sigma1_kPa", t.s1 / kPa},
-                         {"delta2_mm", t.d2 / mm},
-                         {"sigma2_kPa", t.s2 / kPa},
-                         {"delta_c_mm", t.dc / mm},
-                         {"J1_J_m2", t.j1()},
-                         {"J2_J_m2", t.j2()},
-                         {"rms_residual_kPa", fit.rms_residual / kPa},
-                         {"max_residual_kPa", fit.max_residual / kPa},
-                         {"breakpoints", fit.d1_d2_free ? "free (variable projection)" : "fixed"}};
+  Json block = trilinear_json(t);
+  block["rms_residual_kPa"] = fit.rms_residual / kPa;
+  block["max_residual_kPa"] = fit.max_residual / kPa;
+  block["breakpoints"] = fit.d1_d2_free ? "free (variable projection)" : "fixed";
+  report["trilinear"] = block;
 }
 
 void plot_extraction(const analysis::ExtractionOutcome& e, const analysis::TrilinearFit* fit,

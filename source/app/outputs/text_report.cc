@@ -68,9 +68,9 @@ std::string text_report(const Json& s) {
     if (c.value("converged", false)) {
       const auto& t = c["corrected"];
       r << "fit corrected by simulation (" << c["simulations"].get<int>() << " simulations, "
-        << c["forward_runs"].get<int>() << " beam runs): sigma1 " << num(t, "sigma1_kPa")
-        << " kPa, sigma2 " << num(t, "sigma2_kPa") << " kPa, delta_c " << num(t, "delta_c_mm")
-        << " mm, J_tip " << num(t, "J_tip_J_m2")
+        << c["forward_runs"].get<int>() << " " << c.value("forward_model", "beam")
+        << " runs): sigma1 " << num(t, "sigma1_kPa") << " kPa, sigma2 " << num(t, "sigma2_kPa")
+        << " kPa, delta_c " << num(t, "delta_c_mm") << " mm, J_tip " << num(t, "J_tip_J_m2")
         << " J/m^2 (the law handed on; fit_correction.csv)\n";
     } else {
       // The correction's last note is its reason, worded "not corrected: why".

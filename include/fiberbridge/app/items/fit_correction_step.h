@@ -26,7 +26,14 @@ std::function<analysis::LawCorrection(const std::vector<const analysis::Campaign
                                       const law::TrilinearParameters&, double)>
 group_law_correction(const SceneContext& ctx, const analysis::CampaignOptions& options);
 
-/// The scene's Fit/Model correction keys: the mode ("auto", "none", "beam") and the settings.
+/// The simulated test of the correction: the beam with the scene's Beam section, or, for
+/// Fit/Model correction = fem, the FEM with its FEM section (it holds the specimen's far end,
+/// which the beam does not: docs/design.md, "The fit corrected by simulation"). Throws
+/// InputError for fem in a build without the FEM.
+identify::ForwardModel correction_forward_model(const SceneContext& ctx);
+
+/// The scene's Fit/Model correction keys: the mode ("auto", "none", "beam", "fem") and the
+/// settings.
 std::string fit_correction_mode(const SceneContext& ctx);
 identify::ChainCorrectionSettings fit_correction_settings(const SceneContext& ctx);
 

@@ -2,6 +2,7 @@
 // The files, plots and summary keys of extract and fit (analysis/law_extraction.h computes them).
 #include "fiberbridge/analysis/law_extraction.h"
 #include "fiberbridge/app/scene/item_outcome.h"
+#include "fiberbridge/law/piecewise_linear_law.h"
 
 #include <string>
 
@@ -12,6 +13,10 @@ namespace fiberbridge::app {
 /// peak_sigma_dRdd_kPa) and the `extract` block.
 void write_extraction(const analysis::ExtractionOutcome& e, const analysis::ExtractionOptions& o,
                       const std::string& out_dir, ItemReport& report);
+
+/// A trilinear law's summary keys, in the tables' units: delta1_mm, sigma1_kPa, delta2_mm,
+/// sigma2_kPa, delta_c_mm, J1_J_m2, J2_J_m2 (the `trilinear` block's and the correction's).
+Json trilinear_json(const law::TrilinearParameters& t);
 
 /// trilinear_fit.csv and the summary's `trilinear` block.
 void write_trilinear_fit(const analysis::TrilinearFit& fit, const std::string& out_dir,
