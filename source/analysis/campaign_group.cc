@@ -441,7 +441,76 @@ LawShift law_correction(const CampaignGroup& group, const std::vector<CampaignSp
   return shift;
 }
 
+/// Interval `i` around `v` widened on each side by `h` in quadrature (the replicates' half-width
+/// and the chain's accuracy are independent), not below 0 as make_interval.
+Interval widened(const Interval& i, double v, double h) {
+  if (!(h > 0) || !std::isfinite(v) || !std::isfinite(i.lo) || !std::isfinite(i.hi))
+    return i;
+  return {std::max(0.0, v - std::hypot(v - i.lo, h)), v + std::hypot(i.hi - v, h)};
+}
+
+/// The relative standard uncertainties the chain adds to the group's G_ss and J_tip: none (NaN)
+/// unless every member is a record with delta_root (the chain measured its curve); no J_tip term
+/// where J_tip is given (Data/J tip, the rows' j_tip_J_m2), not measured.
+struct ChainAccuracy {
+  double u_G = NAN, u_J = NAN;
+};
+ChainAccuracy chain_accuracy(const CampaignGroup& group,
+                             const std::vector<CampaignSpecimen>& specimens,
+                             const CampaignOptions& o) {
+  if (!group.estimate.ok || group.members.empty() || (o.chain_u_G_ss <= 0 && o.chain_u_J_tip <= 0))
+    return {};
+  bool j_tip_given = o.j_tip > 0;
+  for (auto m : group.members) {
+    if (!specimens[m].record)
+      return {};
+    j_tip_given = j_tip_given || std::isfinite(specimens[m].row.j_tip);
+  }
+  return {o.chain_u_G_ss, j_tip_given ? 0.0 : o.chain_u_J_tip};
+}
+
+/// The chain's accuracy as the fraction of the bridging area G_B = G_ss - J_tip it leaves
+/// uncertain, standard; NaN without a term.
+double bridging_fraction(const CampaignGroup& group, const std::vector<CampaignSpecimen>& specimens,
+                         const CampaignOptions& o) {
+  const ChainAccuracy u = chain_accuracy(group, specimens, o);
+  const GroupEstimate& e = group.estimate;
+  const double G_B = e.G_ss - e.j_tip;
+  if (!std::isfinite(u.u_G) || !(G_B > 0))
+    return NAN;
+  return std::hypot(u.u_G * e.G_ss, u.u_J * e.j_tip) / G_B;
+}
+
+/// The normal quantile of the options' two-sided confidence.
+double normal_quantile(const CampaignOptions& o) {
+  return boost::math::quantile(boost::math::normal(), 1 - 0.5 * (1 - o.confidence));
+}
+
 } // namespace
+
+double chain_accuracy_half_width(const CampaignGroup& group,
+                                 const std::vector<CampaignSpecimen>& specimens,
+                                 const CampaignOptions& o, GroupQuantity q) {
+  const ChainAccuracy u = chain_accuracy(group, specimens, o);
+  if (!std::isfinite(u.u_G))
+    return 0;
+  const GroupEstimate& e = group.estimate;
+  const double z = normal_quantile(o), v = quantity_value(e, q);
+  const double f = bridging_fraction(group, specimens, o); // NaN when G_B <= 0
+  switch (q) {
+  case GroupQuantity::G_ss:
+    return std::isfinite(v) ? z * u.u_G * v : 0;
+  case GroupQuantity::J_tip:
+    return std::isfinite(v) ? z * u.u_J * v : 0;
+  case GroupQuantity::sigma1:
+  case GroupQuantity::sigma2:
+  case GroupQuantity::J1:
+  case GroupQuantity::J2:
+    return e.has_law && std::isfinite(v) && std::isfinite(f) ? z * f * v : 0;
+  default:
+    return 0;
+  }
+}
 
 void analyse_campaign_group(CampaignGroup& group, const std::vector<CampaignSpecimen>& specimens,
                             const CampaignOptions& o) {
@@ -530,19 +599,36 @@ void analyse_campaign_group(CampaignGroup& group, const std::vector<CampaignSpec
     std::vector<double> v;
     for (const auto& s : group.samples)
       v.push_back(s[k]);
+    const auto q = static_cast<GroupQuantity>(k);
+    const double at = quantity_value(group.estimate, q);
     group.ci[k] =
-        make_interval(o, n, quantity_value(group.estimate, static_cast<GroupQuantity>(k)), v);
+        widened(make_interval(o, n, at, v), at, chain_accuracy_half_width(group, specimens, o, q));
   }
+  // The law's band takes the chain's accuracy as the law's stresses do: the same fraction of
+  // the law at each opening.
+  const double f = bridging_fraction(group, specimens, o);
   group.law_lo.resize(band.size());
   group.law_hi.resize(band.size());
   for (std::size_t i = 0; i < band.size(); ++i) {
     const double at =
         law ? law_at(group.estimate.laws.delta, group.estimate.laws.sigma_eq6, group.law_delta[i])
             : NAN;
-    const Interval b = make_interval(o, n, at, band[i]);
+    const Interval b = widened(make_interval(o, n, at, band[i]), at,
+                               std::isfinite(f) ? normal_quantile(o) * f * std::abs(at) : 0);
     group.law_lo[i] = b.lo;
     group.law_hi[i] = b.hi;
   }
+  if (std::isfinite(f) && group.estimate.has_law)
+    group.notes.push_back(
+        name +
+        ": the intervals hold the chain's accuracy on records besides the replicates' "
+        "scatter (Campaign/Chain accuracy: G_ss " +
+        fmt(100 * o.chain_u_G_ss) + " %, J_tip " +
+        (chain_accuracy(group, specimens, o).u_J > 0 ? fmt(100 * o.chain_u_J_tip) + " %"
+                                                     : std::string("given, not measured: none")) +
+        ", standard), which is " + fmt(100 * f) + " % of this group's bridging area G_ss - J_tip " +
+        "and of its law's stresses; in quadrature: sigma1 -+" +
+        fmt(chain_accuracy_half_width(group, specimens, o, GroupQuantity::sigma1)) + " kPa");
   if (group.failed_samples > 0)
     group.notes.push_back(name + ": " + std::to_string(group.failed_samples) + " of " +
                           std::to_string(o.bootstrap_samples) +

@@ -623,6 +623,9 @@ TEST(CampaignCorrection, TheShiftMovesTheEstimateAndEveryBootstrapSample) {
   const CampaignResult plain = analyse_campaign(read_campaign_manifest(m), {}, o, {"DF"});
   int calls = 0;
   CampaignOptions oc = o;
+  // The shift alone: without the chain's accuracy, which widens a group of records' intervals
+  // (CampaignAccuracy below).
+  oc.chain_u_G_ss = oc.chain_u_J_tip = 0;
   oc.correct_law = [&calls](const std::vector<const CampaignSpecimen*>&,
                             const law::TrilinearParameters& law, double j_tip) {
     ++calls;
@@ -677,4 +680,86 @@ TEST(CampaignCorrection, TheShiftMovesTheEstimateAndEveryBootstrapSample) {
   EXPECT_TRUE(std::any_of(n.notes.begin(), n.notes.end(), [](const std::string& x) {
     return x.find("no fixed point") != std::string::npos;
   }));
+}
+
+// The chain's accuracy on records (CampaignOptions::chain_u_G_ss, chain_u_J_tip) widens the
+// intervals of a group of records in quadrature, by u_G G_ss, u_J J_tip and, for the law's
+// stresses and energies, by the fraction u(G_B)/G_B of the bridging area; the other quantities,
+// the point estimates, and groups of R(delta) tables are as before.
+TEST(CampaignAccuracy, ChainAccuracyWidensTheIntervalsOfRecordsInQuadrature) {
+  SyntheticCampaignOptions so;
+  const auto truth = table1_truth(read_property_table(table1));
+  const std::string m = write_synthetic_campaign(scratch("accuracy").string(), truth, so);
+  CampaignOptions none;
+  none.bootstrap_samples = 200;
+  none.chain_u_G_ss = none.chain_u_J_tip = 0;
+  CampaignOptions with = none;
+  with.chain_u_G_ss = 0.02;
+  with.chain_u_J_tip = 0.03;
+  const auto plain = analyse_campaign(read_campaign_manifest(m), {}, none, {"DF"});
+  auto records = plain.specimens;
+  for (auto& s : records)
+    s.record = std::make_shared<const TestRecord>();
+  for (std::size_t gi : {std::size_t{0}, plain.groups.size() - 1}) { // PVA c0 and DF c24
+    const CampaignGroup& p = plain.groups[gi];
+    CampaignGroup tables = make_campaign_groups(plain.specimens)[gi];
+    CampaignGroup g = make_campaign_groups(records)[gi];
+    ASSERT_EQ(g.material, p.material);
+    ASSERT_EQ(g.cycles, p.cycles);
+    analyse_campaign_group(tables, plain.specimens, with);
+    analyse_campaign_group(g, records, with);
+    const double G = g.estimate.G_ss, J = g.estimate.j_tip;
+    ASSERT_GT(G - J, 0);
+    const double f = std::hypot(0.02 * G, 0.03 * J) / (G - J), z = 1.959963984540054;
+    for (std::size_t k = 0; k < n_group_quantities; ++k) {
+      const auto q = static_cast<GroupQuantity>(k);
+      const double v = quantity_value(g.estimate, q);
+      EXPECT_TRUE(same(v, quantity_value(p.estimate, q))) << quantity_key(q);
+      // R(delta) tables: the replicates alone.
+      EXPECT_TRUE(same(tables.ci[k].lo, p.ci[k].lo) && same(tables.ci[k].hi, p.ci[k].hi))
+          << quantity_key(q);
+      double h = 0;
+      if (q == GroupQuantity::G_ss)
+        h = z * 0.02 * v;
+      else if (q == GroupQuantity::J_tip)
+        h = z * 0.03 * v;
+      else if (q == GroupQuantity::sigma1 || q == GroupQuantity::sigma2 || q == GroupQuantity::J1 ||
+               q == GroupQuantity::J2)
+        h = z * f * v;
+      if (!std::isfinite(v) || !std::isfinite(p.ci[k].hi)) // l_b, rho_b: no crack lengths here
+        continue;
+      EXPECT_NEAR(chain_accuracy_half_width(g, records, with, q), h, 1e-9 * (1 + v))
+          << quantity_key(q);
+      // Each side: the replicates' half-width and the chain's in quadrature (1e-9 relative: the
+      // same bootstrap samples, only the sums' rounding differs).
+      EXPECT_NEAR(g.ci[k].hi - v, std::hypot(p.ci[k].hi - v, h), 1e-9 * (1 + v)) << quantity_key(q);
+      if (p.ci[k].lo > 0 && v - std::hypot(v - p.ci[k].lo, h) > 0)
+        EXPECT_NEAR(v - g.ci[k].lo, std::hypot(v - p.ci[k].lo, h), 1e-9 * (1 + v))
+            << quantity_key(q);
+    }
+    // The law's band: the same fraction of the law at each opening.
+    ASSERT_EQ(g.law_hi.size(), p.law_hi.size());
+    for (std::size_t i = 0; i < g.law_hi.size(); ++i)
+      if (std::isfinite(p.law_hi[i]) && p.law_lo[i] > 0) {   // not held at 0: symmetric
+        const double at = 0.5 * (p.law_hi[i] + p.law_lo[i]); // student t: symmetric about it
+        EXPECT_NEAR(g.law_hi[i] - at, std::hypot(p.law_hi[i] - at, z * f * std::abs(at)),
+                    1e-6 * (1 + std::abs(at)));
+      }
+    EXPECT_TRUE(std::any_of(g.notes.begin(), g.notes.end(), [](const std::string& n) {
+      return n.find("the chain's accuracy on records") != std::string::npos;
+    }));
+  }
+  // J_tip given (the rows' j_tip_J_m2) is not measured by the chain: no J_tip term, and G_B's
+  // uncertainty is G_ss's alone.
+  auto given = records;
+  for (auto& s : given)
+    s.row.j_tip = 200;
+  CampaignGroup gg = make_campaign_groups(given).front();
+  analyse_campaign_group(gg, given, with);
+  ASSERT_TRUE(gg.estimate.ok && gg.estimate.has_law);
+  EXPECT_EQ(gg.estimate.j_tip, 200);
+  EXPECT_EQ(chain_accuracy_half_width(gg, given, with, GroupQuantity::J_tip), 0);
+  const double G = gg.estimate.G_ss, s1 = quantity_value(gg.estimate, GroupQuantity::sigma1);
+  EXPECT_NEAR(chain_accuracy_half_width(gg, given, with, GroupQuantity::sigma1),
+              1.959963984540054 * 0.02 * G / (G - 200) * s1, 1e-9 * s1);
 }

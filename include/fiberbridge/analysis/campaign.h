@@ -165,6 +165,14 @@ struct CampaignOptions {
   /// than this many robust standard deviations (1.4826 MAD) and by more than 10 % of the median.
   double outlier_mads = 3.5;
   int law_band_points = 101; ///< points of the law band grid over [0, delta_c]
+  /// The chain's own accuracy on records: relative standard uncertainties of the G_ss and J_tip
+  /// it measures from a record (Campaign/Chain accuracy of G_ss, of J_tip; the RMS errors of the
+  /// chain on the virtual tests of the 20 Table 1 laws, docs/verification.md, "The chain's
+  /// accuracy in the intervals"). The bootstrap over specimens holds the replicates' scatter, not
+  /// an error every record of the chain shares; this term, added in quadrature
+  /// (chain_accuracy_half_width), does. Only groups whose members are records with delta_root
+  /// (raw records or DIC sets) get it: the chain measured their curves. 0: the replicates alone.
+  double chain_u_G_ss = 0.020, chain_u_J_tip = 0.023;
   /// Fit/Model correction: given a group's members (each with its record) and the law and J_tip
   /// the group's chain gave, the law corrected by simulation. Set by the app where the beam is
   /// built; empty: no correction. Groups whose members are R(delta) tables are never corrected
@@ -250,6 +258,17 @@ struct CampaignGroup {
 /// `shift` added to a law estimate: the trilinear law and J_tip, then what follows from them
 /// (delta_c, J1, J2 and the rho_b range at the options' opening).
 void apply_law_shift(GroupEstimate& e, const LawShift& shift, const CampaignOptions& o);
+
+/// The half-width the chain's accuracy (CampaignOptions::chain_u_G_ss, chain_u_J_tip) adds in
+/// quadrature to quantity q's interval, in the units of the tables, at the options' confidence
+/// (normal quantile: a systematic term of known size, not a sample's): u_G G_ss for G_ss, u_J J_tip
+/// for J_tip, and for the law's stresses and energies (sigma1, sigma2, J1, J2) the same fraction as
+/// of the bridging area G_B = G_ss - J_tip, u(G_B)^2 = (u_G G_ss)^2 + (u_J J_tip)^2 (Eq. 6's law
+/// scales with R - J_tip, and the fit keeps its area G_B). 0 for the other quantities, for a group
+/// without an estimate, and for a group not made of records with delta_root.
+double chain_accuracy_half_width(const CampaignGroup& group,
+                                 const std::vector<CampaignSpecimen>& specimens,
+                                 const CampaignOptions& o, GroupQuantity q);
 
 /// The group's seed: the campaign's seed mixed with the group's key (material, cycles) by a
 /// fixed hash, so a group's resamples do not depend on which other groups exist or on the order

@@ -55,6 +55,8 @@ struct CampaignSection {
   analysis::CampaignOptions::Interval interval = analysis::CampaignOptions::Interval::student_t;
   std::vector<std::string> reference_materials;
   double outlier_mads = 3.5;
+  double chain_u_G_ss = analysis::CampaignOptions{}.chain_u_G_ss;
+  double chain_u_J_tip = analysis::CampaignOptions{}.chain_u_J_tip;
   bool fe_export = true;
   bool simulate = false;
   std::string model;
@@ -84,6 +86,19 @@ struct CampaignSection {
     prm.declare_entry("Outlier threshold", "3.5", dealii::Patterns::Double(1),
                       "A specimen is named far from its group when its G_ss lies more than this "
                       "many robust standard deviations (1.4826 MAD) from the group's median.");
+    const analysis::CampaignOptions defaults;
+    prm.declare_entry("Chain accuracy of G_ss", fmt(defaults.chain_u_G_ss),
+                      dealii::Patterns::Double(0, 1),
+                      "Relative standard uncertainty of the G_ss the chain measures from a record "
+                      "(the RMS error on the virtual tests of the 20 Table 1 laws, "
+                      "docs/verification.md). Added in quadrature to the replicates' intervals of "
+                      "groups of records with delta_root (raw records or DIC sets), through the "
+                      "bridging area G_ss - J_tip to the law's stresses; 0 with the J_tip entry: "
+                      "the replicates alone.");
+    prm.declare_entry("Chain accuracy of J_tip", fmt(defaults.chain_u_J_tip),
+                      dealii::Patterns::Double(0, 1),
+                      "Relative standard uncertainty of the J_tip the chain measures from a "
+                      "record (as Chain accuracy of G_ss).");
     prm.declare_entry("FE export", "true", dealii::Patterns::Bool(),
                       "Write each group's trilinear law for LS-DYNA (MAT_186) and Abaqus.");
     prm.declare_entry("Simulate laws", "false", dealii::Patterns::Bool(),
@@ -112,6 +127,8 @@ struct CampaignSection {
                    ? analysis::CampaignOptions::Interval::expanded_percentile
                    : analysis::CampaignOptions::Interval::student_t;
     outlier_mads = prm.get_double("Outlier threshold");
+    chain_u_G_ss = prm.get_double("Chain accuracy of G_ss");
+    chain_u_J_tip = prm.get_double("Chain accuracy of J_tip");
     fe_export = prm.get_bool("FE export");
     simulate = prm.get_bool("Simulate laws");
     model = prm.get("Simulation model");
@@ -215,6 +232,8 @@ CampaignInputs campaign_inputs(const SceneContext& ctx) {
   in.options.confidence = in.section.confidence;
   in.options.interval = in.section.interval;
   in.options.outlier_mads = in.section.outlier_mads;
+  in.options.chain_u_G_ss = in.section.chain_u_G_ss;
+  in.options.chain_u_J_tip = in.section.chain_u_J_tip;
 #ifdef FIBERBRIDGE_HAVE_IDENTIFY
   // Fit/Model correction: groups of records (raw or DIC sets with delta_root) corrected by
   // simulation, as a scene's fit is (items/fit_correction_step.h).

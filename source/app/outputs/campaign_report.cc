@@ -52,8 +52,11 @@ void write_html(const CampaignResult& r, const CampaignWriteOptions& w,
        " bootstrap over whole "
        "specimens within each group (" +
        std::to_string(r.options.bootstrap_samples) + " samples, seed " +
-       std::to_string(r.options.seed) + ", " + interval_name(r.options) + "). Analysis " +
-       fmt(w.seconds, 3) + " s.</p>\n";
+       std::to_string(r.options.seed) + ", " + interval_name(r.options) +
+       "); groups of records with delta_root add the chain's accuracy in quadrature (G_ss " +
+       fmt(100 * r.options.chain_u_G_ss) + " %, J_tip " + fmt(100 * r.options.chain_u_J_tip) +
+       " %, standard; summary.json's ci_chain_accuracy_half_width). Analysis " + fmt(w.seconds, 3) +
+       " s.</p>\n";
   // Table 1
   const auto cycles = cycles_of(r);
   std::vector<std::string> head{"material", "property"};

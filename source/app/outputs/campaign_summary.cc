@@ -18,6 +18,13 @@ Json summary_block(const CampaignResult& r, const CampaignWriteOptions& w) {
     Json cij = Json::object();
     for (std::size_t k = 0; k < analysis::n_group_quantities; ++k)
       cij[analysis::quantity_key(static_cast<GroupQuantity>(k))] = interval_json(g.ci[k]);
+    // The half-widths the chain's accuracy adds in quadrature to the replicates' (0: none).
+    Json chain = Json::object();
+    for (std::size_t k = 0; k < analysis::n_group_quantities; ++k)
+      if (const double h = analysis::chain_accuracy_half_width(g, r.specimens, r.options,
+                                                               static_cast<GroupQuantity>(k));
+          h > 0 && g.has_interval())
+        chain[analysis::quantity_key(static_cast<GroupQuantity>(k))] = json_number(h);
     Json tri = {{"d1_mm", json_number(q(g, GroupQuantity::d1))},
                 {"sigma1_kPa", json_number(q(g, GroupQuantity::sigma1))},
                 {"d2_mm", json_number(q(g, GroupQuantity::d2))},
@@ -43,6 +50,7 @@ Json summary_block(const CampaignResult& r, const CampaignWriteOptions& w) {
                                         json_number(q(g, GroupQuantity::rho_high))})},
          {"rms_residual_kPa", json_number(g.estimate.rms_residual / kPa)},
          {"ci", cij},
+         {"ci_chain_accuracy_half_width", chain},
          {"bootstrap",
           {{"samples", g.samples.size()}, {"failed", g.failed_samples}, {"seed", g.seed}}},
          {"notes", g.notes}});
@@ -87,6 +95,8 @@ Json summary_block(const CampaignResult& r, const CampaignWriteOptions& w) {
           {"seed", r.options.seed},
           {"confidence", r.options.confidence},
           {"interval", interval_name(r.options)},
+          {"chain_accuracy",
+           {{"G_ss_rel", r.options.chain_u_G_ss}, {"J_tip_rel", r.options.chain_u_J_tip}}},
           {"wall_time_s", w.seconds},
           {"groups", groups},
           {"degradation", deg},
