@@ -471,10 +471,7 @@ ChainAccuracy chain_accuracy(const CampaignGroup& group,
 
 /// The chain's accuracy as the fraction of the bridging area G_B = G_ss - J_tip it leaves
 /// uncertain, standard; NaN without a term.
-double bridging_fraction(const CampaignGroup& group, const std::vector<CampaignSpecimen>& specimens,
-                         const CampaignOptions& o) {
-  const ChainAccuracy u = chain_accuracy(group, specimens, o);
-  const GroupEstimate& e = group.estimate;
+double bridging_fraction(const GroupEstimate& e, const ChainAccuracy& u) {
   const double G_B = e.G_ss - e.j_tip;
   if (!std::isfinite(u.u_G) || !(G_B > 0))
     return NAN;
@@ -496,7 +493,7 @@ double chain_accuracy_half_width(const CampaignGroup& group,
     return 0;
   const GroupEstimate& e = group.estimate;
   const double z = normal_quantile(o), v = quantity_value(e, q);
-  const double f = bridging_fraction(group, specimens, o); // NaN when G_B <= 0
+  const double f = bridging_fraction(e, u); // NaN when G_B <= 0
   switch (q) {
   case GroupQuantity::G_ss:
     return std::isfinite(v) ? z * u.u_G * v : 0;
@@ -606,7 +603,8 @@ void analyse_campaign_group(CampaignGroup& group, const std::vector<CampaignSpec
   }
   // The law's band takes the chain's accuracy as the law's stresses do: the same fraction of
   // the law at each opening.
-  const double f = bridging_fraction(group, specimens, o);
+  const ChainAccuracy u = chain_accuracy(group, specimens, o);
+  const double f = bridging_fraction(group.estimate, u);
   group.law_lo.resize(band.size());
   group.law_hi.resize(band.size());
   for (std::size_t i = 0; i < band.size(); ++i) {
@@ -624,8 +622,7 @@ void analyse_campaign_group(CampaignGroup& group, const std::vector<CampaignSpec
         ": the intervals hold the chain's accuracy on records besides the replicates' "
         "scatter (Campaign/Chain accuracy: G_ss " +
         fmt(100 * o.chain_u_G_ss) + " %, J_tip " +
-        (chain_accuracy(group, specimens, o).u_J > 0 ? fmt(100 * o.chain_u_J_tip) + " %"
-                                                     : std::string("given, not measured: none")) +
+        (u.u_J > 0 ? fmt(100 * o.chain_u_J_tip) + " %" : std::string("given, not measured: none")) +
         ", standard), which is " + fmt(100 * f) + " % of this group's bridging area G_ss - J_tip " +
         "and of its law's stresses; in quadrature: sigma1 -+" +
         fmt(chain_accuracy_half_width(group, specimens, o, GroupQuantity::sigma1)) + " kPa");

@@ -33,10 +33,15 @@ fs::path scratch(const std::string& name) {
   return p;
 }
 
+/// The synthetic campaign of the Table 1 laws written under scratch(name); its manifest's path.
+std::string synthetic_manifest(const std::string& name, const SyntheticCampaignOptions& so = {}) {
+  return write_synthetic_campaign(scratch(name).string(), table1_truth(read_property_table(table1)),
+                                  so);
+}
+
 CampaignResult synthetic_campaign(const std::string& name, const SyntheticCampaignOptions& so,
                                   int samples, unsigned seed = 1) {
-  const auto truth = table1_truth(read_property_table(table1));
-  const std::string m = write_synthetic_campaign(scratch(name).string(), truth, so);
+  const std::string m = synthetic_manifest(name, so);
   CampaignOptions o;
   o.bootstrap_samples = samples;
   o.seed = seed;
@@ -615,9 +620,7 @@ TEST(CampaignFiles, GroupFileStemIsTheMaterialAsAFileNamePartAndTheCycles) {
 // and is never corrected. Exact to round-off: every sample is shifted by the same amount, so a
 // Student-t interval's centre moves by it and its half-width not at all.
 TEST(CampaignCorrection, TheShiftMovesTheEstimateAndEveryBootstrapSample) {
-  SyntheticCampaignOptions so;
-  const auto truth = table1_truth(read_property_table(table1));
-  const std::string m = write_synthetic_campaign(scratch("correction").string(), truth, so);
+  const std::string m = synthetic_manifest("correction");
   CampaignOptions o;
   o.bootstrap_samples = 50;
   const CampaignResult plain = analyse_campaign(read_campaign_manifest(m), {}, o, {"DF"});
@@ -687,9 +690,7 @@ TEST(CampaignCorrection, TheShiftMovesTheEstimateAndEveryBootstrapSample) {
 // stresses and energies, by the fraction u(G_B)/G_B of the bridging area; the other quantities,
 // the point estimates, and groups of R(delta) tables are as before.
 TEST(CampaignAccuracy, ChainAccuracyWidensTheIntervalsOfRecordsInQuadrature) {
-  SyntheticCampaignOptions so;
-  const auto truth = table1_truth(read_property_table(table1));
-  const std::string m = write_synthetic_campaign(scratch("accuracy").string(), truth, so);
+  const std::string m = synthetic_manifest("accuracy");
   CampaignOptions none;
   none.bootstrap_samples = 200;
   none.chain_u_G_ss = none.chain_u_J_tip = 0;
