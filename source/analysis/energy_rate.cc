@@ -189,6 +189,11 @@ EnergySlopes energy_slopes(const std::vector<double>& a, const std::vector<doubl
   return slopes_with_windows(WindowLines(a, D), a, std::vector<double>(a.size(), window));
 }
 
+EnergySlopes energy_slopes_per_point(const std::vector<double>& a, const std::vector<double>& D,
+                                     const std::vector<double>& window) {
+  return slopes_with_windows(WindowLines(a, D), a, window);
+}
+
 EnergySlopes energy_slopes_adaptive(const std::vector<double>& a, const std::vector<double>& D,
                                     double w_min, double w_max) {
   const WindowLines lines(a, D);

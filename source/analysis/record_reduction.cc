@@ -97,13 +97,22 @@ double auto_window(double spacing, double h) {
 }
 
 /// Energy slopes with the user's window, or (automatic) a window chosen at each reading from the
-/// data between 5 reading spacings and auto_window (energy_rate.h). `window` is the user's
-/// window or NaN; `reported` takes the median window used.
-EnergySlopes slopes_of(const std::vector<double>& a, const std::vector<double>& D, double window,
-                       double spacing, double h, double& reported) {
-  if (!std::isnan(window)) {
-    reported = window;
-    return energy_slopes(a, D, window);
+/// data between 5 reading spacings and auto_window (energy_rate.h), or the windows of an earlier
+/// reduction (ReduceOptions::window_da, at the extensions a - a0). `reported` takes the median
+/// window used.
+EnergySlopes slopes_of(const std::vector<double>& a, const std::vector<double>& D,
+                       const ReduceOptions& o, double a0, double spacing, double h,
+                       double& reported) {
+  if (!o.window_da.empty()) {
+    std::vector<double> w;
+    for (const double x : a)
+      w.push_back(interpolate_linear(o.window_da, o.window_width, x - a0));
+    reported = median_upper(w);
+    return energy_slopes_per_point(a, D, w);
+  }
+  if (!std::isnan(o.smoothing_window)) {
+    reported = o.smoothing_window;
+    return energy_slopes(a, D, o.smoothing_window);
   }
   const double w_max = auto_window(spacing, h);
   EnergySlopes e =
@@ -269,8 +278,7 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
   // Direct energy: D and a at the fresh readings (as read), and with a from the monotone smooth
   // crack (energy_rate.h) at the same rows. The window is centred on each reading, so it always
   // spans whole reading steps.
-  const EnergySlopes as_read =
-      slopes_of(ar, Dr, o.smoothing_window, reading_spacing, s.h, out.window);
+  const EnergySlopes as_read = slopes_of(ar, Dr, o, out.a0, reading_spacing, s.h, out.window);
   std::vector<double> gaps;
   for (std::size_t j = 1; j < readings.size(); ++j)
     gaps.push_back(rec.time.empty() ? double(readings[j] - readings[j - 1])
@@ -281,8 +289,7 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
   for (std::size_t k : readings)
     am.push_back(smooth[k]);
   double monotone_window = NAN;
-  const EnergySlopes monotone =
-      slopes_of(am, Dr, o.smoothing_window, reading_spacing, s.h, monotone_window);
+  const EnergySlopes monotone = slopes_of(am, Dr, o, out.a0, reading_spacing, s.h, monotone_window);
   const bool use_monotone = o.energy_crack == "monotone";
   if (use_monotone)
     out.window = monotone_window;
@@ -308,6 +315,7 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
     out.R_energy_lo.push_back(used.lo[j] / s.B);
     out.R_energy_hi.push_back(used.hi[j] / s.B);
     out.R_energy_readings.push_back(as_read.slope[j] / s.B);
+    out.windows.push_back(used.window[j]);
     out.rows.push_back(k);
   }
   std::vector<double> windows_used;
@@ -544,9 +552,9 @@ ReducedRecord reduce_record(const TestRecord& rec, const specimen::Specimen& sp,
     // Against the equivalent crack the automatic window is chosen from the data as with
     // readings, at the steps' spacing.
     double eq_window = out.window;
-    const EnergySlopes eq = measured ? energy_slopes(out.a_eq, Dr, out.window)
-                                     : slopes_of(out.a_eq, Dr, o.smoothing_window,
-                                                 median_step(out.a_eq), s.h, eq_window);
+    const EnergySlopes eq =
+        measured ? energy_slopes(out.a_eq, Dr, out.window)
+                 : slopes_of(out.a_eq, Dr, o, out.a0, median_step(out.a_eq), s.h, eq_window);
     if (!measured)
       out.window = eq_window;
     for (std::size_t j = 0; j < out.rows.size(); ++j) {
@@ -555,6 +563,7 @@ ReducedRecord reduce_record(const TestRecord& rec, const specimen::Specimen& sp,
       out.R_energy_eq_hi.push_back(eq.hi[j] / s.B);
     }
     if (!measured) {
+      out.windows = eq.window;
       out.R_energy = out.R_energy_eq;
       out.R_energy_lo = out.R_energy_eq_lo;
       out.R_energy_hi = out.R_energy_eq_hi;
@@ -676,6 +685,16 @@ RDeltaData to_rdelta(const std::vector<ReducedRecord>& records, const std::strin
     data.replicates.push_back(rep);
   }
   return data;
+}
+
+void reduce_with_windows_of(const ReducedRecord& measured, ReduceOptions& options) {
+  options.window_da.clear();
+  options.window_width.clear();
+  for (std::size_t j = 0; j < measured.da.size() && j < measured.windows.size(); ++j)
+    if (options.window_da.empty() || measured.da[j] > options.window_da.back()) {
+      options.window_da.push_back(measured.da[j]);
+      options.window_width.push_back(measured.windows[j]);
+    }
 }
 
 } // namespace fiberbridge::analysis

@@ -201,6 +201,7 @@ SteadyState find_steady_state(const RDeltaCurve& curve, const SteadyStateOptions
         " is not below the plateau R = " + jm2(G_tail) + " over delta >= " + mm(d[t0]) +
         "; there is no bridging toughness G_B = G_ss - J_tip > 0");
   const bool flat = std::abs(rise) <= band;
+  ss.end_effect = falling;
   std::ostringstream tail_text;
   if (falling)
     tail_text << "R falls over the last " << options.tail_fraction * 100

@@ -43,6 +43,7 @@ py::dict extraction_dict(const std::shared_ptr<const analysis::ExtractionOutcome
   d["delta_c_mm"] = e->steady.delta_c / mm;
   d["delta_c_automatic"] = e->steady.delta_c_automatic;
   d["J_tip_automatic"] = e->steady.j_tip_automatic;
+  d["end_effect"] = e->steady.end_effect;
   d["criterion"] = e->steady.criterion;
   d["averaging"] = e->curve.report;
   d["outcome"] = owner;

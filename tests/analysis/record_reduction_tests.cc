@@ -348,3 +348,41 @@ TEST(RecordReduction, SharedRecordsWithoutTheCrackColumn) {
     EXPECT_NEAR(eq.cbbm.plateau / with.mbt.plateau, 1, 0.08) << name;
   }
 }
+
+// The fit's correction by simulation reduces each simulated record with its measured record's
+// windows (ReduceOptions::window_da, reduce_with_windows_of), so that the chain is one statistic
+// on both. Checked on a shared record: reduced with its own windows it gives back its own R
+// (the windows are the same, so the slopes are, to round-off); and the option does take effect:
+// with the windows of another record (DCB-02's) the slopes differ and follow those windows.
+TEST(RecordReduction, ReducedWithTheWindowsOfAnotherReduction) {
+  const auto rec = read_test_records(record_path("DCB-01"), shared_columns()).at(0);
+  const auto own = reduce_record(rec, shared_specimen());
+  ASSERT_EQ(own.windows.size(), own.R_energy.size());
+  ReduceOptions with_own;
+  reduce_with_windows_of(own, with_own);
+  ASSERT_FALSE(with_own.window_da.empty());
+  const auto again = reduce_record(rec, shared_specimen(), with_own);
+  ASSERT_EQ(again.R_energy.size(), own.R_energy.size());
+  for (std::size_t i = 0; i < own.R_energy.size(); ++i) {
+    EXPECT_NEAR(again.windows[i], own.windows[i], 1e-12) << "reading " << i;
+    // The readings-as-read slopes (R_energy_readings) are the windowed ones before R at
+    // initiation is refitted; both must repeat.
+    EXPECT_NEAR(again.R_energy_readings[i], own.R_energy_readings[i],
+                1e-9 * std::abs(own.R_energy_readings[i]))
+        << "reading " << i;
+  }
+  const auto other = reduce_record(read_test_records(record_path("DCB-02"), shared_columns()).at(0),
+                                   shared_specimen());
+  ReduceOptions with_other;
+  reduce_with_windows_of(other, with_other);
+  const auto moved = reduce_record(rec, shared_specimen(), with_other);
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < moved.windows.size(); ++i) {
+    const double expected =
+        interpolate_linear(with_other.window_da, with_other.window_width, moved.da[i]);
+    EXPECT_NEAR(moved.windows[i], expected, 1e-12) << "reading " << i;
+    differ += std::abs(moved.R_energy_readings[i] - own.R_energy_readings[i]) >
+              1e-6 * std::abs(own.R_energy_readings[i]);
+  }
+  EXPECT_GT(differ, moved.windows.size() / 4) << "the other windows changed too few slopes";
+}

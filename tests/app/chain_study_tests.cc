@@ -139,11 +139,14 @@ TEST(ChainStudyTargets, CorrectionRemovesTheSeedFitsBias) {
 }
 
 // Fit/Model correction = fem: the FEM simulates the records instead of the beam. On the PRF
-// control virtual test the two land within 0.4 % of each other in sigma1 and 0.6 % in sigma2
-// (beam 331.0 and 191.7 kPa, FEM 332.1 and 192.7, measured 2026-12-07), so 2 % holds the
-// forward models' agreement and fails a FEM whose simulated records end early (before the FEM
-// reported the notch-root opening past delta_c, its records stopped at delta_c and the
-// correction refused: "no steady state in the records simulated").
+// control virtual test (measured 2026-12-07, with the simulated records reduced with the
+// measured windows) the two give the corrected law's G_ss within 0.1 %, delta_c within 0.6 % and
+// sigma2 within 0.2 % of each other. 2 % holds the forward models' agreement and fails a FEM
+// whose simulated records end early (before the FEM reported the notch-root opening past
+// delta_c, its records stopped at delta_c and the correction refused: "no steady state in the
+// records simulated"). sigma1 is not compared: it follows J_tip through the bridging area, and
+// the FEM's J_tip runs 1-5 % low against the beam's at 2 mm elements (docs/verification.md,
+// "The specimen's far end in the chain"), which moves sigma1 by about 2 %.
 TEST(ChainStudy, FemAsTheCorrectionsForwardModel) {
   const std::string name = "chain_study_fem_correction";
   run_chain_study(name, "PRF_c0");
@@ -166,8 +169,30 @@ TEST(ChainStudy, FemAsTheCorrectionsForwardModel) {
     ASSERT_TRUE(s["fit_correction"]["converged"].get<bool>()) << s["fit_correction"].dump();
   EXPECT_EQ(by[1]["fit_correction"]["forward_model"].get<std::string>(), "fem");
   const Json &beam = by[0]["trilinear_corrected"], &fem = by[1]["trilinear_corrected"];
-  for (const char* key : {"sigma1_kPa", "sigma2_kPa"})
+  for (const char* key : {"G_ss_J_m2", "delta_c_mm", "sigma2_kPa"})
     EXPECT_NEAR(get(fem, key) / get(beam, key), 1.0, 0.02) << key;
+}
+
+// The specimen's far end (Fit/Model correction = auto). On PVA at 8-24 cycles the zone is
+// 130-140 mm long when the notch root moves, 60-70 mm before the virtual specimen's end: R
+// falls from there on (the tip runs ahead of the work done), and extract's plateau reads G_ss
+// 2.6-5.2 % low (measured 2026-12-07; the record holds no steady state to read). extract flags
+// the fall (end_effect), auto then corrects with the FEM, which holds the far end, and the
+// corrected law's G_ss (J_tip + J1 + J2) is within 0.8 % (issue 39's target: 2 %). The plateau
+// is required to be at least 2 % low, so that the test says the effect it corrects is there.
+TEST(ChainStudyTargets, SpecimensFarEndCorrectedByTheFem) {
+  const std::string name = "chain_study_far_end";
+  const Json s = run_chain_study(name, "PVA_c8, PVA_c24");
+  ASSERT_TRUE(s.contains("chain_study"));
+  for (const auto& c : s["chain_study"]["cases"]) {
+    const std::string id = c["case"].get<std::string>();
+    ASSERT_EQ(c["correction"].get<std::string>(), "converged") << c.dump();
+    const Json chain = read_json(work(name) / "out" / "cases" / id / "chain" / "summary.json");
+    EXPECT_TRUE(chain["extract"]["end_effect"].get<bool>()) << id;
+    EXPECT_EQ(chain["fit_correction"]["forward_model"].get<std::string>(), "fem") << id;
+    EXPECT_LE(get(c, "G_ss_uncorrected_J_m2") / get(c, "G_ss_true_J_m2") - 1, -0.02) << c.dump();
+    expect_targets(c);
+  }
 }
 #else
 TEST(ChainStudy, SkippedWithoutTheFem) {

@@ -33,6 +33,9 @@ def test_extract_settings_are_the_data_section_s(fb):
     fixed = fb.extract(DATA, delta_c_mm=6.0, j_tip=200.0)
     assert fixed.delta_c_mm == 6.0 and fixed.J_tip_J_m2 == 200.0
     assert not fixed.delta_c_automatic and not fixed.J_tip_automatic
+    # extract's flag for a record whose R falls at its end (the specimen's far end): this
+    # table's R holds its plateau.
+    assert fixed.end_effect is False
     with pytest.raises(fb.InputError, match="Intervals"):
         fb.extract(DATA, intervals=0)
 

@@ -172,7 +172,7 @@ struct CampaignOptions {
   /// an error every record of the chain shares; this term, added in quadrature
   /// (chain_accuracy_half_width), does. Only groups whose members are records with delta_root
   /// (raw records or DIC sets) get it: the chain measured their curves. 0: the replicates alone.
-  double chain_u_G_ss = 0.020, chain_u_J_tip = 0.023;
+  double chain_u_G_ss = 0.020, chain_u_J_tip = 0.021;
   /// Fit/Model correction: given a group's members (each with its record) and the law and J_tip
   /// the group's chain gave, the law corrected by simulation. Set by the app where the beam is
   /// built; empty: no correction. Groups whose members are R(delta) tables are never corrected

@@ -23,6 +23,10 @@ struct EnergySlopes {
 EnergySlopes energy_slopes(const std::vector<double>& a, const std::vector<double>& D,
                            double window);
 
+/// The same slopes and band with a given window at each point (`window[j]` at `a[j]`).
+EnergySlopes energy_slopes_per_point(const std::vector<double>& a, const std::vector<double>& D,
+                                     const std::vector<double>& window);
+
 /// The same slopes and band with a window chosen at each point from the data: intersection of
 /// confidence intervals (Lepski/ICI) over windows from `w_min` growing by sqrt(2) up to `w_max`.
 /// The interval of each slope is +-2 sigma/sqrt(Sxx), sigma the median residual standard

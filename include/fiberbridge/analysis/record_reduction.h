@@ -43,6 +43,14 @@ struct ReduceOptions {
   /// smoothed over a few reading intervals; energy_rate.h). docs/design.md section 6 says which
   /// is the default and why.
   std::string energy_crack = "readings";
+  /// The direct-energy windows of an earlier reduction as a function of crack extension
+  /// (ReducedRecord::da and ::windows): when given, the slopes take them (linear in the
+  /// extension, held at the ends) instead of choosing their own. The fit's correction by
+  /// simulation reduces each simulated record with its measured record's windows: the windows a
+  /// noisy record chooses are wider than a clean simulation's, and with its own windows the chain
+  /// would not be the same statistic on both (docs/verification.md, "The correction's records
+  /// reduced with the measured windows"). Empty: the smoothing window above.
+  std::vector<double> window_da, window_width;
 };
 
 /// Initiation and plateau of one method's R(a).
@@ -77,7 +85,8 @@ struct ReducedRecord {
   double opening_offset = NAN;           ///< opening at zero load of the initial line [m]
   InitiationValues initiation;
   double a0 = NAN;                 ///< [m]
-  double window = NAN;             ///< smoothing window used [m]
+  double window = NAN;             ///< smoothing window used (median over the rows) [m]
+  std::vector<double> windows;     ///< the direct-energy window of each row [m]
   double mbt_delta = NAN;          ///< |Delta| of MBT [m]
   double cc_n = NAN;               ///< CC exponent n (slope of log C against log a)
   double mcc_A1 = NAN;             ///< MCC slope A1 of a/(2h) against C^(1/3) [N^(1/3) m^(-1/3)]
@@ -115,6 +124,9 @@ struct ReducedRecord {
 /// initial linear part).
 ReducedRecord reduce_record(const TestRecord& record, const specimen::Specimen& specimen,
                             const ReduceOptions& options = {});
+
+/// Sets `options` to reduce with `measured`'s direct-energy windows (ReduceOptions::window_da).
+void reduce_with_windows_of(const ReducedRecord& measured, ReduceOptions& options);
 
 /// Replicates on a common crack-extension grid: each method's mean and sample standard
 /// deviation over the records at each point.

@@ -19,6 +19,11 @@ struct SteadyState {
   double delta_c = 0; ///< [m]
   bool delta_c_automatic = true;
   bool j_tip_automatic = true;
+  /// R falls over the last stretch of the data beyond the plateau band: the zone meets the
+  /// specimen's far end (the tip reading runs ahead of the work done), so the record's plateau
+  /// is cut short and G_ss is read from the last flat stretch before the fall. A model of the
+  /// specimen that holds its far end can take the effect out (Fit/Model correction = auto).
+  bool end_effect = false;
   std::string criterion; ///< the stated criterion and the numbers it used (for the report)
 };
 

@@ -15,17 +15,46 @@
 
 namespace fiberbridge::app {
 
-identify::ForwardModel correction_forward_model(const SceneContext& ctx) {
-  if (fit_correction_mode(ctx) != "fem")
+identify::ForwardModel correction_forward_model(const SceneContext& ctx, bool end_effect) {
+  const std::string mode = fit_correction_mode(ctx);
+  const SimulationModel* fem = built_model("fem");
+  const bool fem_built = fem && fem->identify_forward;
+  // auto: the beam (cheaper, and its corrected J_tip is the less biased on the virtual tests of
+  // the Table 1 laws), but the FEM where the record's R falls at its end: that is the specimen's
+  // far end, which the beam does not hold and the FEM does (docs/verification.md, "The
+  // specimen's far end in the chain").
+  const bool use_fem = mode == "fem" || (mode == "auto" && end_effect && fem_built);
+  if (!use_fem)
     return identify::beam_forward_model(ctx.parameters().section<beam::BeamParameters>("Beam"));
   // The FEM through the model registry (the app's adapter, items/fem_forward_model.cc): the
   // scene's FEM section, each run on MPI_COMM_SELF, writing nothing.
-  const SimulationModel* fem = built_model("fem");
-  if (!fem || !fem->identify_forward)
+  if (!fem_built)
     throw InputError(ctx.scene_file + ": Fit/Model correction = fem needs a build with the FEM "
                                       "(FIBERBRIDGE_MODELS); use beam");
   return fem->identify_forward(ctx);
 }
+
+namespace {
+
+/// The reduce options of each measured record for its simulated twin: the chain's own, with the
+/// direct-energy windows the record chose (analysis::reduce_with_windows_of). The chain must be
+/// one statistic on the records and on their simulations; its data-chosen windows are wider on
+/// a noisy record than on a clean simulation, and that alone moved the corrected delta_c 4 %
+/// on a virtual test (docs/verification.md, "The correction's records reduced with the
+/// measured windows").
+std::vector<analysis::ReduceOptions>
+reduce_options_of(const std::vector<analysis::TestRecord>& records,
+                  const analysis::RecordChainOptions& chain) {
+  std::vector<analysis::ReduceOptions> out;
+  for (const auto& r : records) {
+    analysis::ReduceOptions o = chain.reduce;
+    analysis::reduce_with_windows_of(analysis::reduce_record(r, chain.specimen, chain.reduce), o);
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
+} // namespace
 
 identify::ChainCorrection correct_fit_by_simulation(const SceneContext& ctx,
                                                     const analysis::ExtractionOutcome& extraction,
@@ -35,10 +64,12 @@ identify::ChainCorrection correct_fit_by_simulation(const SceneContext& ctx,
   const analysis::RecordChainOptions chain_options = ctx.record_chain();
   // The Data section as extract read it; only its data are replaced by the simulated records'.
   const auto& data = ctx.parameters().section<analysis::ExtractionOptions>("Data");
-  const identify::MeasuringChain chain = [&](const std::vector<analysis::TestRecord>& records) {
+  const auto& records = ctx.reduced->records;
+  const std::vector<analysis::ReduceOptions> reduce = reduce_options_of(records, chain_options);
+  const identify::MeasuringChain chain = [&](const std::vector<analysis::TestRecord>& sims) {
     std::vector<analysis::ReducedRecord> reduced;
-    for (const auto& r : records)
-      reduced.push_back(analysis::reduce_record(r, chain_options.specimen, chain_options.reduce));
+    for (std::size_t i = 0; i < sims.size(); ++i)
+      reduced.push_back(analysis::reduce_record(sims[i], chain_options.specimen, reduce[i]));
     analysis::ExtractionOptions o = data;
     o.data_file = "the records simulated by the fit's correction";
     o.data =
@@ -47,8 +78,7 @@ identify::ChainCorrection correct_fit_by_simulation(const SceneContext& ctx,
     return identify::ChainEstimate{analysis::fit_extracted_law(e, fit_options).law, e.steady.j_tip};
   };
   const SpecimenSetup setup = ctx.specimen_setup();
-  const identify::ForwardModel model = correction_forward_model(ctx);
-  const auto& records = ctx.reduced->records;
+  const identify::ForwardModel model = correction_forward_model(ctx, extraction.steady.end_effect);
   return identify::correct_chain(
       records, std::vector<specimen::Specimen>(records.size(), setup.specimen), setup.material,
       {fit.law, extraction.steady.j_tip}, chain, model, s);
@@ -81,8 +111,10 @@ group_law_correction(const SceneContext& ctx, const analysis::CampaignOptions& o
                  const law::TrilinearParameters& law, double j_tip) {
     std::vector<analysis::TestRecord> records;
     std::vector<specimen::Specimen> specimens;
+    std::vector<analysis::ReduceOptions> reduce;
     for (const auto* m : members) {
       records.push_back(*m->record);
+      reduce.push_back(reduce_options_of({*m->record}, m->chain).front());
       // a0: the record's first crack reading (correct_chain), else the row's or the scene's a0
       // for records without readings, as the reduction took it.
       specimen::Specimen sp = m->chain.specimen;
@@ -97,8 +129,8 @@ group_law_correction(const SceneContext& ctx, const analysis::CampaignOptions& o
       std::vector<std::size_t> all;
       for (std::size_t i = 0; i < sims.size(); ++i) {
         analysis::CampaignSpecimen c = *members[i];
-        const auto& o = c.chain;
-        const analysis::ReducedRecord rr = analysis::reduce_record(sims[i], o.specimen, o.reduce);
+        const analysis::ReducedRecord rr =
+            analysis::reduce_record(sims[i], c.chain.specimen, reduce[i]);
         c.curve = analysis::to_rdelta({rr}, c.row.file).replicates.front();
         simulated.push_back(std::move(c));
         all.push_back(i);

@@ -39,6 +39,7 @@ struct ChainStudySection {
   std::string cases;
   std::string table1;
   std::string chain_run;
+  std::string model_correction;
   bool reuse = true;
   bool identify = false;
 
@@ -63,11 +64,17 @@ struct ChainStudySection {
     prm.declare_entry("Chain run", "dic, reduce, extract, fit", dealii::Patterns::Anything(),
                       "The Run list set on each generated dic_scene.prm: the chain as a user runs "
                       "it on a virtual test.");
+    prm.declare_entry("Model correction", "", dealii::Patterns::Selection("|auto|none|beam|fem"),
+                      "Fit/Model correction set on each chain scene; empty: the scene's default "
+                      "(auto). beam measures the chain as a campaign's groups correct it "
+                      "(scripts/chain_accuracy.py; docs/verification.md, \"The correction's "
+                      "records reduced with the measured windows\").");
   }
   void parse_parameters(dealii::ParameterHandler& prm) {
     cases = prm.get("Cases");
     table1 = prm.get("Table 1");
     chain_run = prm.get("Chain run");
+    model_correction = prm.get("Model correction");
     reuse = prm.get_bool("Reuse virtual tests");
     identify = prm.get_bool("Identify");
   }
@@ -92,12 +99,17 @@ void read_recovered(const std::string& summary_path, ChainRow& row) {
   // The fit corrected by simulation (Fit/Model correction) is what the chain hands on: the
   // recovery is its, and the seed's fit stays beside.
   if (s.contains("fit_correction")) {
-    row.uncorrected = {row.j_tip, row.delta_c, row.sigma1, row.sigma2};
+    row.uncorrected = {row.j_tip, row.g_ss, row.delta_c, row.sigma1, row.sigma2};
     const bool converged = s["fit_correction"].value("converged", false);
     row.correction = converged ? "converged" : "not converged";
     if (converged) {
       const Json& c = s["trilinear_corrected"];
       row.j_tip = get(c, "J_tip_J_m2");
+      // The corrected law's own G_ss (J_tip + J1 + J2): the law the chain hands on. It also
+      // loses the plateau's overshoot past delta_c and, with a model that holds the specimen's
+      // far end, its cut-short plateau (docs/verification.md, "The specimen's far end in the
+      // chain").
+      row.g_ss = get(c, "G_ss_J_m2");
       row.delta_c = get(c, "delta_c_mm");
       row.sigma1 = get(c, "sigma1_kPa");
       row.sigma2 = get(c, "sigma2_kPa");
@@ -226,9 +238,10 @@ ChainRow run_case(const SceneContext& ctx, const ChainStudySection& section, con
 
   t0 = std::chrono::steady_clock::now();
   try {
-    run_scene(fem_dir + "/virtual_test/dic_scene.prm",
-              {"Run=" + section.chain_run, "Output directory=" + chain_dir}, false,
-              ctx.progress_sink);
+    std::vector<std::string> set = {"Run=" + section.chain_run, "Output directory=" + chain_dir};
+    if (!section.model_correction.empty())
+      set.push_back("Fit/Model correction=" + section.model_correction);
+    run_scene(fem_dir + "/virtual_test/dic_scene.prm", set, false, ctx.progress_sink);
     read_recovered(chain_dir + "/summary.json", row);
     row.outcome = "recovered";
   } catch (const std::exception& e) {

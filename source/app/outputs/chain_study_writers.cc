@@ -132,6 +132,7 @@ void write_chain_study(const SceneContext& ctx, const std::vector<ChainRow>& row
                "fem_wall_time_s",
                "chain_wall_time_s",
                "J_tip_uncorrected_J_m2",
+               "G_ss_uncorrected_J_m2",
                "delta_c_uncorrected_mm",
                "sigma1_uncorrected_kPa",
                "sigma2_uncorrected_kPa"},
@@ -140,8 +141,8 @@ void write_chain_study(const SceneContext& ctx, const std::vector<ChainRow>& row
                "dic_scene.prm); truth from the case's Cohesive law; sigma at d1 = 0.1 mm and "
                "d2 = 1.0 mm; err_rel = (recovered - true) / true; law L2 over [0, true delta_c]",
                "correction: converged = the recovered J_tip, delta_c, sigma1, sigma2 are the fit "
-               "corrected by simulation (Fit/Model correction), *_uncorrected the seed's fit "
-               "beside; G_ss is extract's in both"});
+               "corrected by simulation (Fit/Model correction) and G_ss its J_tip + J1 + J2, "
+               "*_uncorrected the seed's fit and extract's plateau G_ss beside"});
   for (const auto& r : rows)
     w.row({r.name, r.factor, r.outcome, r.stage, r.targets_met ? "yes" : "no", cell(r.missed),
            cell(r.reason), r.correction},
@@ -166,6 +167,7 @@ void write_chain_study(const SceneContext& ctx, const std::vector<ChainRow>& row
            r.fem_wall_s,
            r.chain_wall_s,
            r.uncorrected.j_tip,
+           r.uncorrected.g_ss,
            r.uncorrected.delta_c,
            r.uncorrected.sigma1,
            r.uncorrected.sigma2});
@@ -191,6 +193,7 @@ void write_chain_study(const SceneContext& ctx, const std::vector<ChainRow>& row
                      {"reason", r.reason},
                      {"correction", r.correction},
                      {"J_tip_uncorrected_J_m2", json_number(r.uncorrected.j_tip)},
+                     {"G_ss_uncorrected_J_m2", json_number(r.uncorrected.g_ss)},
                      {"delta_c_uncorrected_mm", json_number(r.uncorrected.delta_c)},
                      {"sigma1_uncorrected_kPa", json_number(r.uncorrected.sigma1)},
                      {"sigma2_uncorrected_kPa", json_number(r.uncorrected.sigma2)},

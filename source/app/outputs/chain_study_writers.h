@@ -24,10 +24,11 @@ struct ChainRow {
   double j_tip = 0, g_ss = 0, delta_c = 0, sigma1 = 0, sigma2 = 0; ///< NaN when refused
   /// The fit's correction by simulation (Fit/Model correction): "converged" (the recovered values
   /// above are the corrected ones), "not converged" (they are the seed's fit, the reason in the
-  /// chain's summary.json) or "" (not run). `uncorrected`: the seed's fit and J_tip.
+  /// chain's summary.json) or "" (not run). `uncorrected`: the seed's fit and J_tip, and
+  /// extract's plateau G_ss; the corrected G_ss is the corrected law's J_tip + J1 + J2.
   std::string correction;
   struct Uncorrected {
-    double j_tip = NAN, delta_c = NAN, sigma1 = NAN, sigma2 = NAN;
+    double j_tip = NAN, g_ss = NAN, delta_c = NAN, sigma1 = NAN, sigma2 = NAN;
   } uncorrected;
   /// || fitted trilinear - true law ||_2 / || true law ||_2 over [0, true delta_c].
   double law_l2_rel = 0;

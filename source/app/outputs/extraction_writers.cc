@@ -55,6 +55,7 @@ void write_extraction(const analysis::ExtractionOutcome& e, const analysis::Extr
                        {"steady_state_criterion", e.steady.criterion},
                        {"delta_c_automatic", e.steady.delta_c_automatic},
                        {"J_tip_automatic", e.steady.j_tip_automatic},
+                       {"end_effect", e.steady.end_effect},
                        {"intervals_n", o.intervals},
                        {"smoothing_half_width_k", o.half_width},
                        {"G_B_J_m2", json_number(G_B)},

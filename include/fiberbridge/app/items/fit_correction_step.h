@@ -28,9 +28,10 @@ group_law_correction(const SceneContext& ctx, const analysis::CampaignOptions& o
 
 /// The simulated test of the correction: the beam with the scene's Beam section, or, for
 /// Fit/Model correction = fem, the FEM with its FEM section (it holds the specimen's far end,
-/// which the beam does not: docs/design.md, "The fit corrected by simulation"). Throws
-/// InputError for fem in a build without the FEM.
-identify::ForwardModel correction_forward_model(const SceneContext& ctx);
+/// which the beam does not: docs/design.md, "The fit corrected by simulation"). `auto` takes
+/// the FEM, when built, for records whose R falls at the end (`end_effect`,
+/// analysis::SteadyState), else the beam. Throws InputError for fem in a build without the FEM.
+identify::ForwardModel correction_forward_model(const SceneContext& ctx, bool end_effect = false);
 
 /// The scene's Fit/Model correction keys: the mode ("auto", "none", "beam", "fem") and the
 /// settings.
