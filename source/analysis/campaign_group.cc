@@ -516,6 +516,16 @@ void analyse_campaign_group(CampaignGroup& group, const std::vector<CampaignSpec
   const std::string name = group.material + " at " + fmt(group.cycles) + " cycles";
   group.correction = law_correction(group, specimens, o, name, group.notes);
   apply_law_shift(group.estimate, group.correction, o);
+  if (group.estimate.ok && group.estimate.steady.end_effect)
+    // The plateau this G_ss is read from is cut short (SteadyState::end_effect); a campaign's
+    // groups are corrected by the beam, which does not hold the far end, and G_ss is measured.
+    group.notes.push_back(
+        name + ": R falls over the end of the group's averaged R(delta) beyond the plateau band "
+               "(the zone meets the specimens' far end, so the tip runs ahead of the work done): "
+               "G_ss is read from the last flat stretch before the fall and is low by that "
+               "effect (2.6-5.2 % on the virtual tests of PVA's laws at 8-24 cycles, "
+               "docs/verification.md, session 32); longer specimens, or a scene's fit with "
+               "Fit/Model correction = auto (the FEM), take it out");
   if (!group.estimate.ok) {
     group.notes.push_back(name + ": no estimate (" + group.estimate.failure + ")");
     if (const std::string culprit = single_spoiler(group, specimens, o); !culprit.empty())

@@ -764,3 +764,41 @@ TEST(CampaignAccuracy, ChainAccuracyWidensTheIntervalsOfRecordsInQuadrature) {
   EXPECT_NEAR(chain_accuracy_half_width(gg, given, with, GroupQuantity::sigma1),
               1.959963984540054 * 0.02 * G / (G - 200) * s1, 1e-9 * s1);
 }
+
+// A group whose averaged R(delta) falls at its end (the zone meets the specimens' far end) says
+// so beside its G_ss: the plateau it is read from is cut short, and a campaign's groups are
+// corrected by the beam, which does not hold that end (docs/verification.md, session 32). The
+// synthetic PVA control group, each specimen's R lowered by 60 J/m^2 per mm over the last 15 %
+// of its opening (72 J/m^2 over the last 1.2 mm of 8 mm, against a plateau band of 2 % of G_B,
+// about 18 J/m^2); the same group untouched has no such note.
+TEST(CampaignGroup, FallingEndOfTheGroupsCurveIsNoted) {
+  const auto truth = table1_truth(read_property_table(table1));
+  SyntheticCampaignOptions so;
+  so.replicates = 4;
+  for (const bool falling : {false, true}) {
+    const std::string m = write_synthetic_campaign(
+        scratch(falling ? "falling_end" : "flat_end").string(), {truth[0]}, so);
+    CampaignOptions o;
+    o.bootstrap_samples = 0;
+    std::vector<CampaignSpecimen> specimens;
+    for (const auto& row : read_campaign_manifest(m).rows) {
+      specimens.push_back(load_campaign_specimen(row, {}));
+      auto& c = specimens.back().curve;
+      const double from = 0.85 * c.delta.back();
+      if (falling)
+        for (std::size_t i = 0; i < c.delta.size(); ++i)
+          if (c.delta[i] > from)
+            c.R[i] -= 60 * (c.delta[i] - from) / units::mm;
+      assess_campaign_specimen(specimens.back(), o);
+    }
+    auto groups = make_campaign_groups(specimens);
+    ASSERT_EQ(groups.size(), 1u);
+    analyse_campaign_group(groups[0], specimens, o);
+    ASSERT_TRUE(groups[0].estimate.ok) << groups[0].estimate.failure;
+    EXPECT_EQ(groups[0].estimate.steady.end_effect, falling);
+    std::string notes;
+    for (const auto& n : groups[0].notes)
+      notes += n + "\n";
+    EXPECT_EQ(notes.find("far end") != std::string::npos, falling) << notes;
+  }
+}
