@@ -522,8 +522,8 @@ void analyse_campaign_group(CampaignGroup& group, const std::vector<CampaignSpec
     group.notes.push_back(
         name + ": R falls over the end of the group's averaged R(delta) beyond the plateau band "
                "(the zone meets the specimens' far end, so the tip runs ahead of the work done): "
-               "G_ss is read from the last flat stretch before the fall and is low by that "
-               "effect (2.6-5.2 % on the virtual tests of PVA's laws at 8-24 cycles, "
+               "G_ss is read before the fall and is low by that effect (2.6-5.2 % on the virtual "
+               "tests of PVA's laws at 8-24 cycles, "
                "docs/verification.md, session 32); longer specimens, or a scene's fit with "
                "Fit/Model correction = auto (the FEM), take it out");
   if (!group.estimate.ok) {

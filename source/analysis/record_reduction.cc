@@ -326,7 +326,11 @@ void reduce_measured(const TestRecord& rec, const std::vector<double>& D, const 
   out.notes.push_back(
       "direct energy: R = dD/(B da), D = W - P opening/2, slope of a local least-squares line of "
       "D against a over a " +
-      (std::isnan(o.smoothing_window)
+      (!o.window_da.empty()
+           ? "window at each reading taken from an earlier reduction (another record's, at the "
+             "same crack extension; median " +
+                 num(out.window / units::mm) + " mm)"
+       : std::isnan(o.smoothing_window)
            ? "window chosen at each reading from the data (intersection of confidence intervals "
              "over windows from 5 median reading spacings up to the larger of 10 spacings and 4 "
              "arm thicknesses, " +
@@ -570,7 +574,10 @@ ReducedRecord reduce_record(const TestRecord& rec, const specimen::Specimen& sp,
       out.notes.push_back("direct energy: R = dD/(B da_eq), D = W - P opening/2 against the "
                           "equivalent crack, local lines over a " +
                           num(out.window / units::mm) + " mm window" +
-                          (std::isnan(o.smoothing_window)
+                          (!o.window_da.empty()
+                               ? " (median of the windows taken from an earlier reduction, at "
+                                 "the same extension)"
+                           : std::isnan(o.smoothing_window)
                                ? " (median of the windows chosen from the data at each step, as "
                                  "with readings)"
                                : "") +

@@ -385,4 +385,32 @@ TEST(RecordReduction, ReducedWithTheWindowsOfAnotherReduction) {
               1e-6 * std::abs(own.R_energy_readings[i]);
   }
   EXPECT_GT(differ, moved.windows.size() / 4) << "the other windows changed too few slopes";
+
+  // Against the CBBM equivalent crack (no crack column) the windows are the equivalent path's,
+  // one per row, and give its own R back the same way.
+  TestRecord bare = rec;
+  bare.crack_length.clear();
+  specimen::Specimen sp = shared_specimen();
+  sp.initial_crack = rec.crack_length.front();
+  ReduceOptions eq_options;
+  eq_options.shear_modulus = 2.29e9; // data/dcb_records/README.md's approximate moduli
+  eq_options.transverse_modulus = 6.11e9;
+  const auto eq = reduce_record(bare, sp, eq_options);
+  ASSERT_EQ(eq.crack, "equivalent");
+  ASSERT_EQ(eq.windows.size(), eq.R_energy.size());
+  ReduceOptions eq_own = eq_options;
+  reduce_with_windows_of(eq, eq_own);
+  const auto eq_again = reduce_record(bare, sp, eq_own);
+  ASSERT_EQ(eq_again.R_energy.size(), eq.R_energy.size());
+  std::size_t finite = 0;
+  for (std::size_t i = 0; i < eq.R_energy.size(); ++i) {
+    // The first steps' windows hold fewer than 3 points: NaN in both, as before.
+    ASSERT_EQ(std::isfinite(eq_again.R_energy[i]), std::isfinite(eq.R_energy[i])) << i;
+    if (!std::isfinite(eq.R_energy[i]))
+      continue;
+    ++finite;
+    EXPECT_NEAR(eq_again.R_energy[i], eq.R_energy[i], 1e-9 * std::abs(eq.R_energy[i]))
+        << "equivalent row " << i;
+  }
+  EXPECT_GT(finite, eq.R_energy.size() / 2);
 }

@@ -120,7 +120,8 @@ TEST(ChainStudyTargets, JtipOfASteepShortLaw) {
 // recoverable energy is not the dissipation rate the record holds while the zone develops, and the
 // records' windows add to it (docs/verification.md, "Where sigma1's bias comes from"). Measured
 // after the correction: sigma1 +3.7 %, sigma2 -0.1 %, delta_c -1.6 % (uncorrected +10.2, -2.6,
-// +2.5 %). Bounds: sigma1 6 % (the measured 3.7 % with the run-to-run spread of the chain's
+// +2.5 %); with the simulated records reduced with the records' windows (session 32) +1.0,
+// +1.1 and -1.6 %. Bounds: sigma1 6 % (the measured 3.7 % with the run-to-run spread of the chain's
 // automatic choices, and under the uncorrected 10 %), sigma2 and delta_c 2.5 % (under their
 // uncorrected errors); the uncorrected sigma1 at least 7 %, so that the test says the bias it
 // corrects is there.
@@ -184,6 +185,7 @@ TEST(ChainStudyTargets, SpecimensFarEndCorrectedByTheFem) {
   const std::string name = "chain_study_far_end";
   const Json s = run_chain_study(name, "PVA_c8, PVA_c24");
   ASSERT_TRUE(s.contains("chain_study"));
+  ASSERT_EQ(s["chain_study"]["cases"].size(), 2u);
   for (const auto& c : s["chain_study"]["cases"]) {
     const std::string id = c["case"].get<std::string>();
     ASSERT_EQ(c["correction"].get<std::string>(), "converged") << c.dump();

@@ -21,7 +21,8 @@ struct SteadyState {
   bool j_tip_automatic = true;
   /// R falls over the last stretch of the data beyond the plateau band: the zone meets the
   /// specimen's far end (the tip reading runs ahead of the work done), so the record's plateau
-  /// is cut short and G_ss is read from the last flat stretch before the fall. A model of the
+  /// is cut short and G_ss is read before the fall (the last flat stretch, or R at a given
+  /// delta_c when no stretch is flat). A model of the
   /// specimen that holds its far end can take the effect out (Fit/Model correction = auto).
   bool end_effect = false;
   std::string criterion; ///< the stated criterion and the numbers it used (for the report)
