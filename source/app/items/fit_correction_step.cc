@@ -43,12 +43,12 @@ namespace {
 /// on a virtual test (docs/verification.md, "The correction's records reduced with the
 /// measured windows").
 std::vector<analysis::ReduceOptions>
-reduce_options_of(const std::vector<analysis::TestRecord>& records,
+reduce_options_of(const std::vector<analysis::ReducedRecord>& measured,
                   const analysis::RecordChainOptions& chain) {
   std::vector<analysis::ReduceOptions> out;
-  for (const auto& r : records) {
+  for (const auto& r : measured) {
     analysis::ReduceOptions o = chain.reduce;
-    analysis::reduce_with_windows_of(analysis::reduce_record(r, chain.specimen, chain.reduce), o);
+    analysis::reduce_with_windows_of(r, o);
     out.push_back(std::move(o));
   }
   return out;
@@ -65,7 +65,9 @@ identify::ChainCorrection correct_fit_by_simulation(const SceneContext& ctx,
   // The Data section as extract read it; only its data are replaced by the simulated records'.
   const auto& data = ctx.parameters().section<analysis::ExtractionOptions>("Data");
   const auto& records = ctx.reduced->records;
-  const std::vector<analysis::ReduceOptions> reduce = reduce_options_of(records, chain_options);
+  // The windows reduce chose on the records (ctx.reduced->reduced, one per record, same order).
+  const std::vector<analysis::ReduceOptions> reduce =
+      reduce_options_of(ctx.reduced->reduced, chain_options);
   const identify::MeasuringChain chain = [&](const std::vector<analysis::TestRecord>& sims) {
     std::vector<analysis::ReducedRecord> reduced;
     for (std::size_t i = 0; i < sims.size(); ++i)
@@ -114,7 +116,11 @@ group_law_correction(const SceneContext& ctx, const analysis::CampaignOptions& o
     std::vector<analysis::ReduceOptions> reduce;
     for (const auto* m : members) {
       records.push_back(*m->record);
-      reduce.push_back(reduce_options_of({*m->record}, m->chain).front());
+      // A campaign specimen keeps its curve, not its reduction: reduced once more, per group.
+      reduce.push_back(
+          reduce_options_of(
+              {analysis::reduce_record(*m->record, m->chain.specimen, m->chain.reduce)}, m->chain)
+              .front());
       // a0: the record's first crack reading (correct_chain), else the row's or the scene's a0
       // for records without readings, as the reduction took it.
       specimen::Specimen sp = m->chain.specimen;
