@@ -5,6 +5,7 @@
 #include "fiberbridge/core/csv.h"
 #include "fiberbridge/core/error.h"
 #include "fiberbridge/dic/dic_analysis.h"
+#include "support/scratch_dirs.h"
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 using namespace fiberbridge;
 using namespace fiberbridge::dic;
 using fiberbridge::test::Out;
+using fiberbridge::test::ScratchDirs;
 using fiberbridge::test::SyntheticDcb;
 namespace fs = std::filesystem;
 
@@ -38,6 +40,7 @@ fs::path fresh_dir(const std::string& name) {
   const fs::path d = fs::path(::testing::TempDir()) / ("fb_dic_" + name);
   fs::remove_all(d);
   fs::create_directories(d);
+  ScratchDirs::remove_when_passed(d);
   return d;
 }
 
