@@ -23,13 +23,18 @@ struct RunResult {
   std::string err;
 };
 
-/// Runs the executable in a fresh work directory named `name`; stderr captured. The directory
-/// goes when the test passes (support/scratch_dirs.h).
-inline RunResult run(const std::string& name, const std::string& args) {
+/// The work directory `name`; it goes when the test passes (support/scratch_dirs.h).
+inline fs::path work(const std::string& name) {
   const fs::path dir = fs::path(FIBERBRIDGE_WORK_DIR) / name;
+  ScratchDirs::remove_when_passed(dir);
+  return dir;
+}
+
+/// Runs the executable in a fresh work directory `work(name)`; stderr captured.
+inline RunResult run(const std::string& name, const std::string& args) {
+  const fs::path dir = work(name);
   fs::remove_all(dir);
   fs::create_directories(dir);
-  ScratchDirs::remove_when_passed(dir);
   const std::string err_file = (dir / "stderr.txt").string();
   const std::string cmd = "cd '" + dir.string() + "' && '" + FIBERBRIDGE_BIN + "' " + args +
                           " > stdout.txt 2> '" + err_file + "'";
@@ -50,12 +55,6 @@ inline std::string data(const std::string& f) {
 }
 inline std::string source(const std::string& f) {
   return std::string(FIBERBRIDGE_SOURCE_DIR) + "/" + f;
-}
-/// The work directory `name`; it goes when the test passes, as run()'s do.
-inline fs::path work(const std::string& name) {
-  const fs::path dir = fs::path(FIBERBRIDGE_WORK_DIR) / name;
-  ScratchDirs::remove_when_passed(dir);
-  return dir;
 }
 
 /// A failure must say why in one line naming `expect`, exit non-zero and leave no summary.
